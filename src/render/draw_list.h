@@ -1,0 +1,57 @@
+// What the renderer draws, with no GL and no physics in it: the app builds a DrawFrame from the
+// simulation's state; the renderer only reads it. float is enough for pictures.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace tumble {
+
+// A triangle soup with one normal per triangle (flat shading per convex face).
+struct DrawMesh {
+  std::vector<Eigen::Vector3f> positions;   // 3 per triangle, counter-clockwise seen from outside
+  std::vector<Eigen::Vector3f> normals;     // 1 per triangle, outward unit
+};
+
+struct DrawInstance {
+  int mesh = 0;                                       // index returned by Renderer::addMesh
+  Eigen::Affine3f model = Eigen::Affine3f::Identity(); // mesh coordinates -> world (rigid)
+  Eigen::Vector3f colour{0.8f, 0.8f, 0.8f};           // linear RGB albedo, 0..1
+};
+
+// The static ground plane z = height, drawn as a large checkerboard so motion reads.
+struct DrawGround {
+  bool present = false;
+  float height = 0;                                    // m
+  Eigen::Vector3f colour_a{0.55f, 0.55f, 0.55f};      // linear RGB
+  Eigen::Vector3f colour_b{0.42f, 0.42f, 0.42f};
+  float checker_m = 1.0f;                              // checker square edge, m
+  float extent_m = 200.0f;                             // half size of the drawn square, m
+};
+
+struct DrawCamera {
+  Eigen::Vector3f eye{6, -8, 4};
+  Eigen::Vector3f target{0, 0, 0.5f};
+  Eigen::Vector3f up{0, 0, 1};                         // world z-up
+  float fov_y_deg = 45;
+  float near_m = 0.05f, far_m = 500;
+};
+
+struct DirectionalLight {
+  Eigen::Vector3f direction{-0.4f, 0.3f, -1};         // the way the light travels (towards the scene)
+  Eigen::Vector3f colour{1, 1, 1};                     // linear RGB
+  float intensity = 1;
+  bool casts_shadows = true;                           // at most one light casts shadows
+};
+
+struct DrawFrame {
+  DrawCamera camera;
+  std::vector<DirectionalLight> lights;
+  Eigen::Vector3f ambient{0.25f, 0.25f, 0.28f};       // linear RGB added to every surface
+  Eigen::Vector3f background{0.62f, 0.72f, 0.85f};    // linear RGB
+  DrawGround ground;
+  std::vector<DrawInstance> instances;
+};
+
+}  // namespace tumble
