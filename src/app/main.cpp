@@ -1,0 +1,55 @@
+// tumble: simulate rigid bodies with contact and render them off-screen.
+// main parses the command line, runs one subcommand, and maps errors to documented exit codes.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <functional>
+#include <map>
+
+#include "app/commands.h"
+#include "app/interrupt.h"
+#include "base/error.h"
+
+namespace {
+
+const char* kExitCodes = R"(Exit codes:
+  0   success
+  64  bad command line (unknown flag, malformed value)
+  65  bad scene: malformed JSON, unknown field, wrong type, value out of range, unusable mesh
+  66  missing input: the scene or a mesh file does not exist or cannot be read
+  69  unavailable: no OpenGL (OSMesa) or no H.264 encoder (libx264)
+  70  numerical failure during the simulation (NaN or infinite state)
+  73  cannot create output: it exists (add -y) or the folder is not writable
+  130 interrupted (Ctrl-C); the frames rendered so far are kept, a video is finalised
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tumble - offline rigid-body animation: a scene file in, frames or a video out", "tumble"};
+  app.footer(kExitCodes);
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "tumble 0.1.0");
+  std::map<std::string, std::function<int()>> commands = {
+      {"render", tumble::addRenderCommand(app)},
+      {"simulate", tumble::addSimulateCommand(app)},
+      {"check", tumble::addCheckCommand(app)},
+  };
+  for (CLI::App* sub : app.get_subcommands({})) sub->footer(kExitCodes);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : static_cast<int>(tumble::ExitCode::Usage);
+  }
+  tumble::installInterruptHandlers();
+  try {
+    for (CLI::App* sub : app.get_subcommands()) return commands.at(sub->get_name())();
+  } catch (const tumble::Error& e) {
+    std::fprintf(stderr, "tumble: %s\n", e.what());
+    return static_cast<int>(e.code());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tumble: internal error: %s\n", e.what());
+    return static_cast<int>(tumble::ExitCode::Software);
+  }
+  return 0;
+}

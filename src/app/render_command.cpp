@@ -1,0 +1,172 @@
+// tumble render SCENE [-o out.mp4 | -o 'out/frame_####.png'] ...
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.h"
+#include "app/frame_selection.h"
+#include "app/interrupt.h"
+#include "app/progress.h"
+#include "app/scene_drawing.h"
+#include "app/scene_options.h"
+#include "base/error.h"
+#include "dynamics/simulator.h"
+#include "dynamics/world_builder.h"
+#include "io/make_frame_sink.h"
+#include "io/output_path.h"
+#include "render/renderer.h"
+#include "scene/scene_overrides.h"
+
+namespace tumble {
+namespace {
+
+struct RenderOptions {
+  SceneOptions scene;
+  std::string output, size, frames, shaders;
+  std::optional<int> start, end, crf, samples, shadow_map_size;
+  bool overwrite = false, skip_existing = false;
+};
+
+// Wall time of each phase, for the closing summary.
+struct PhaseTimes {
+  double simulate = 0, render = 0, read_back = 0, encode = 0;
+};
+
+void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
+  if (!o.size.empty()) setSize(scene, o.size);
+  if (o.samples) {
+    if (*o.samples != 1 && *o.samples != 2 && *o.samples != 4)
+      throw Error(ExitCode::Usage, "--samples: MSAA takes 1, 2 or 4 samples (llvmpipe allows 4 at most)");
+    scene.render.samples = *o.samples;
+  }
+  if (o.crf) scene.render.crf = *o.crf;
+  if (o.shadow_map_size) scene.render.shadow_map_size = *o.shadow_map_size;
+}
+
+// Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
+// drops the frames whose PNG is already there (resuming an interrupted render).
+void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::vector<int>& frames) {
+  std::vector<std::filesystem::path> existing = existingOutputs(target, frames);
+  if (existing.empty() || o.overwrite) return;
+  if (o.skip_existing && target.kind == OutputTarget::Kind::PngSequence) {
+    std::erase_if(frames, [&](int f) { return std::filesystem::exists(framePath(target, f)); });
+    return;
+  }
+  std::string more = existing.size() > 1 ? " (and " + std::to_string(existing.size() - 1) + " more)" : "";
+  throw Error(ExitCode::CantCreate, existing.front().string() + more +
+                                        " already exists; add -y/--overwrite to replace it" +
+                                        (target.kind == OutputTarget::Kind::PngSequence
+                                             ? " or --skip-existing to keep it"
+                                             : ""));
+}
+
+std::string formatSeconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f s", s);
+  return buffer;
+}
+
+int run(const RenderOptions& o) {
+  Scene scene = loadSceneWithOverrides(o.scene);
+  applyRenderOverrides(o, scene);
+  std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
+  std::string output = !o.output.empty() ? o.output : scene.output.value_or("out/" + scene.name + ".mp4");
+  OutputTarget target = parseOutput(output, static_cast<int>(frames.size()));
+  resolveExisting(o, target, frames);
+  if (frames.empty()) {
+    if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
+    return 0;
+  }
+  SinkOptions sink_options{scene.render.width, scene.render.height, scene.render.fps,
+                           scene.render.crf, o.overwrite, o.skip_existing};
+  std::unique_ptr<FrameSink> sink = makeFrameSink(target, sink_options);
+
+  BuiltWorld built = buildWorld(scene);
+  for (const std::string& w : built.warnings)
+    if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
+
+  auto total_start = std::chrono::steady_clock::now();
+  PhaseTimes times;
+  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, frames.back()};
+  SceneDrawing drawing = prepareDrawing(scene, built.world);
+  Simulator simulator(std::move(built.world), plan);
+  Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
+  auto start = std::chrono::steady_clock::now();
+  Trajectory trajectory = simulator.run([&](int f) { sim_progress.update(f); });
+  sim_progress.finish();
+  times.simulate = secondsSince(start);
+
+  RenderConfig config;
+  config.width = scene.render.width;
+  config.height = scene.render.height;
+  config.samples = scene.render.samples;
+  config.shadow_map_size = scene.render.shadow_map_size;
+  config.shader_dir = o.shaders;
+  std::unique_ptr<Renderer> renderer = Renderer::create(config);
+  std::vector<int> mesh_ids;
+  for (const DrawMesh& m : drawing.meshes) mesh_ids.push_back(renderer->addMesh(m));
+
+  Progress progress("render", static_cast<int>(frames.size()), !o.scene.quiet);
+  RgbImage image;
+  int done = 0;
+  for (int frame : frames) {
+    if (interruptRequested()) break;
+    poseInstances(drawing, trajectory.frames[frame - 1], mesh_ids);
+    start = std::chrono::steady_clock::now();
+    renderer->draw(drawing.frame);
+    times.render += secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    renderer->readBack(image);
+    times.read_back += secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    sink->write(image, frame);
+    times.encode += secondsSince(start);
+    progress.update(++done);
+  }
+  start = std::chrono::steady_clock::now();
+  sink->finish();
+  times.encode += secondsSince(start);
+  progress.finish();
+  double wall = secondsSince(total_start);
+
+  bool interrupted = done < static_cast<int>(frames.size());
+  if (!o.scene.quiet || interrupted) {
+    double simulated = trajectory.times.back();
+    std::fprintf(stderr,
+                 "tumble: %s %d of %zu frames (%.3f s simulated) to %s in %s: simulate %s, render %s, "
+                 "read back %s, encode %s (%.1f frames/s)\n",
+                 interrupted ? "interrupted after" : "rendered", done, frames.size(), simulated,
+                 sink->describe().c_str(), formatSeconds(wall).c_str(), formatSeconds(times.simulate).c_str(),
+                 formatSeconds(times.render).c_str(), formatSeconds(times.read_back).c_str(),
+                 formatSeconds(times.encode).c_str(), done / std::max(wall, 1e-9));
+  }
+  if (o.scene.verbose)
+    for (const StageTime& s : simulator.pipeline().profile())
+      std::fprintf(stderr, "  stage %-10s %s\n", s.name.c_str(), formatSeconds(s.seconds).c_str());
+  return interrupted ? static_cast<int>(ExitCode::Interrupted) : 0;
+}
+
+}  // namespace
+
+std::function<int()> addRenderCommand(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Simulate a scene and render it to a video or PNG sequence");
+  addSceneOptions(*cmd, o->scene);
+  cmd->add_option("-o,--output", o->output,
+                  "out.mp4 | out.mkv | out.mov | out/ | 'out/frame_####.png' | 'out/frame_%04d.png' "
+                  "(default: the scene's \"output\", else out/SCENE.mp4)");
+  cmd->add_option("--size", o->size, "Frame size WIDTHxHEIGHT, e.g. 1280x720");
+  cmd->add_option("-s,--start", o->start, "First frame to render (frames count from 1)");
+  cmd->add_option("-e,--end", o->end, "Last frame to render");
+  cmd->add_option("--frames", o->frames, "Frames to render, e.g. 1,5,10..20");
+  cmd->add_option("--crf", o->crf, "H.264 quality, 0 (lossless) .. 51 (worst); default 23")
+      ->check(CLI::Range(0, 51));
+  cmd->add_option("--samples", o->samples, "MSAA samples: 1, 2 or 4");
+  cmd->add_option("--shadow-map-size", o->shadow_map_size, "Shadow map texels per side")
+      ->check(CLI::Range(256, 8192));
+  cmd->add_option("--shaders", o->shaders, "Folder of the GLSL shaders (default: the source tree's shaders/)");
+  cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
+  cmd->add_flag("--skip-existing", o->skip_existing, "Keep PNG frames that already exist (resume)");
+  return [o] { return run(*o); };
+}
+
+}  // namespace tumble

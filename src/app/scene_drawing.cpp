@@ -1,0 +1,99 @@
+#include "app/scene_drawing.h"
+
+#include <cmath>
+
+namespace tumble {
+namespace {
+
+// Polygon faces become triangle fans (they are convex); each triangle keeps the face normal, so
+// every convex face shades flat.
+DrawMesh meshOf(const RigidBody& body) {
+  DrawMesh mesh;
+  for (const ConvexPiece& piece : body.pieces) {
+    for (std::size_t f = 0; f < piece.faces.size(); ++f) {
+      const std::vector<int>& face = piece.faces[f];
+      for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+        mesh.positions.push_back(piece.vertices[face[0]].cast<float>());
+        mesh.positions.push_back(piece.vertices[face[k]].cast<float>());
+        mesh.positions.push_back(piece.vertices[face[k + 1]].cast<float>());
+        mesh.normals.push_back(piece.face_normals[f].cast<float>());
+      }
+    }
+  }
+  return mesh;
+}
+
+DrawCamera cameraOf(const CameraSpec& spec) {
+  DrawCamera cam;
+  cam.eye = spec.position_m.cast<float>();
+  if (spec.orientation) {
+    // The camera looks along its own -z with +y up (the OpenGL and Blender camera convention).
+    Eigen::Matrix3d R = spec.orientation->toRotationMatrix();
+    cam.target = (spec.position_m - R.col(2)).cast<float>();
+    cam.up = R.col(1).cast<float>();
+  } else {
+    cam.target = spec.look_at_m->cast<float>();
+    cam.up = spec.up.normalized().cast<float>();
+  }
+  cam.fov_y_deg = static_cast<float>(spec.fov_y_deg);
+  return cam;
+}
+
+}  // namespace
+
+Eigen::Vector3f srgbToLinear(const Eigen::Vector3d& srgb) {
+  Eigen::Vector3f out;
+  for (int i = 0; i < 3; ++i) {
+    double c = srgb[i];
+    out[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  }
+  return out;
+}
+
+SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
+  SceneDrawing d;
+  d.frame.camera = cameraOf(scene.camera);
+  for (const DirectionalLightSpec& l : scene.lighting.directional) {
+    DirectionalLight light;
+    light.direction = l.direction.normalized().cast<float>();
+    light.colour = srgbToLinear(l.colour_srgb);
+    light.intensity = static_cast<float>(l.intensity);
+    light.casts_shadows = l.shadows;
+    d.frame.lights.push_back(light);
+  }
+  d.frame.ambient = srgbToLinear(scene.lighting.ambient_srgb) * float(scene.lighting.ambient_intensity);
+  d.frame.background = srgbToLinear(scene.render.background_srgb);
+  for (const RigidBody& body : world.bodies) {
+    if (body.shape == ShapeKind::Plane) {
+      d.frame.ground.present = true;
+      d.frame.ground.height = static_cast<float>(body.x.z());
+      d.frame.ground.colour_a = srgbToLinear(body.colour_srgb);
+      d.frame.ground.colour_b = d.frame.ground.colour_a * 0.72f;
+      d.mesh_of_body.push_back(-1);
+    } else {
+      d.mesh_of_body.push_back(static_cast<int>(d.meshes.size()));
+      d.meshes.push_back(meshOf(body));
+    }
+  }
+  for (const RigidBody& body : world.bodies) {
+    if (body.shape == ShapeKind::Plane) continue;
+    DrawInstance inst;
+    inst.colour = srgbToLinear(body.colour_srgb);
+    d.frame.instances.push_back(inst);
+  }
+  return d;
+}
+
+void poseInstances(SceneDrawing& d, const std::vector<BodySample>& samples,
+                   const std::vector<int>& uploaded_mesh_ids) {
+  std::size_t next = 0;
+  for (std::size_t b = 0; b < samples.size(); ++b) {
+    int mesh = d.mesh_of_body[b];
+    if (mesh < 0) continue;
+    DrawInstance& inst = d.frame.instances[next++];
+    inst.mesh = uploaded_mesh_ids[mesh];
+    inst.model = Eigen::Translation3f(samples[b].x.cast<float>()) * samples[b].q.cast<float>();
+  }
+}
+
+}  // namespace tumble

@@ -1,0 +1,30 @@
+#include "app/scene_options.h"
+
+#include "base/error.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
+
+namespace tumble {
+
+void addSceneOptions(CLI::App& command, SceneOptions& o) {
+  command.add_option("scene", o.scene, "Scene file (JSON, schema version 1)")->required();
+  command.add_option("--fps", o.fps, "Frames per second (overrides render.fps)");
+  command.add_option("--duration", o.duration_s, "Seconds to simulate (overrides render.duration_s)");
+  command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.dt_s)");
+  command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.integrator)")
+      ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
+  command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+  command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
+}
+
+Scene loadSceneWithOverrides(const SceneOptions& o) {
+  Scene scene = loadScene(o.scene);
+  if (o.fps) setFrameRate(scene, *o.fps);
+  if (o.duration_s) setDuration(scene, *o.duration_s);
+  if (o.dt_s) setTimeStep(scene, *o.dt_s, "--dt");
+  if (!o.integrator.empty())
+    scene.simulation.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
+  return scene;
+}
+
+}  // namespace tumble

@@ -1,0 +1,44 @@
+// Runs the pipeline from the initial world to the last frame, sampling every body at every frame
+// (or every step), and stops with a clear error the step a state turns NaN or infinite.
+#pragma once
+
+#include <functional>
+
+#include "dynamics/pipeline.h"
+#include "dynamics/step_settings.h"
+#include "dynamics/trajectory.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+struct SimulationPlan {
+  StepSettings step;
+  int steps_per_frame = 8;
+  int frames = 120;            // frame 1 is the initial state at t = 0
+};
+
+BodySample sampleOf(const RigidBody& body);
+
+class Simulator {
+ public:
+  Simulator(World world, const SimulationPlan& plan);
+
+  // Steps to the next frame. `on_step` (if set) sees the world after every step.
+  void advanceFrame(const std::function<void(const World&)>& on_step = {});
+  // Runs every frame and returns the samples at frame times; `on_frame` reports progress.
+  Trajectory run(const std::function<void(int frame)>& on_frame = {},
+                 const std::function<void(const World&)>& on_step = {});
+
+  const World& world() const { return world_; }
+  const Pipeline& pipeline() const { return pipeline_; }
+
+ private:
+  void checkFinite() const;
+
+  World world_;
+  SimulationPlan plan_;
+  Pipeline pipeline_;
+  long steps_ = 0;
+};
+
+}  // namespace tumble

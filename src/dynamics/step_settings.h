@@ -1,0 +1,13 @@
+// Settings of one simulation step. Read-only during a step: stages take `const StepSettings&`.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace tumble {
+
+struct StepSettings {
+  double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
+  Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
+};
+
+}  // namespace tumble

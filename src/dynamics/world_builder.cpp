@@ -1,0 +1,91 @@
+#include "dynamics/world_builder.h"
+
+#include "base/error.h"
+#include "geometry/mass_properties.h"
+#include "geometry/mesh_import.h"
+#include "geometry/primitives.h"
+
+namespace tumble {
+namespace {
+
+std::string locate(const Scene& scene, const SourceLocation& at) {
+  std::string where = scene.file.string();
+  if (at.line > 0) where += ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
+  return where + ": " + at.pointer + ": ";
+}
+
+std::vector<ConvexPiece> piecesOf(const Scene& scene, const BodySpec& spec,
+                                  std::vector<std::string>& warnings) {
+  switch (spec.shape) {
+    case ShapeKind::Box: return {makeBox(spec.box_size_m / 2)};
+    case ShapeKind::Sphere: return {makeIcosphere(spec.sphere_radius_m, spec.sphere_subdivisions)};
+    case ShapeKind::Plane: return {};
+    case ShapeKind::Mesh: break;
+  }
+  try {
+    ImportedPieces imported = importConvexPieces(spec.mesh, spec.mesh_scale);
+    for (const std::string& w : imported.warnings)
+      warnings.push_back("body \"" + spec.name + "\": " + w);
+    return std::move(imported.pieces);
+  } catch (const Error& e) {
+    throw Error(e.code(), locate(scene, spec.mesh_location) + e.what());
+  }
+}
+
+// Mass properties put in the principal frame; the body's orientation absorbs the frame's rotation
+// so the shape sits exactly where the scene placed it.
+void setMassAndFrame(const BodySpec& spec, std::vector<ConvexPiece>& pieces, RigidBody& body) {
+  MassProperties mp = massProperties(pieces, spec.density_kg_m3);
+  if (spec.mass_kg) {
+    double scale = *spec.mass_kg / mp.mass;   // same shape, another density
+    mp.mass *= scale;
+    mp.inertia *= scale;
+  }
+  PrincipalFrame frame = principalFrame(mp.inertia);
+  for (ConvexPiece& p : pieces) p.transform(frame.rotation.transpose(), -frame.rotation.transpose() * mp.center);
+  body.pieces = std::move(pieces);
+  body.x = spec.position_m + spec.orientation * mp.center;
+  body.q = (spec.orientation * Eigen::Quaterniond(frame.rotation)).normalized();
+  body.mass = mp.mass;
+  body.inertia_body = frame.moments;
+  if (!spec.is_static) {
+    body.inv_mass = 1 / mp.mass;
+    body.inv_inertia_body = frame.moments.cwiseInverse();
+  }
+}
+
+RigidBody buildBody(const Scene& scene, const BodySpec& spec, std::vector<std::string>& warnings) {
+  RigidBody body;
+  body.name = spec.name;
+  body.shape = spec.shape;
+  body.is_static = spec.is_static;
+  body.restitution = spec.restitution;
+  body.friction = spec.friction;
+  body.colour_srgb = spec.colour_srgb;
+  std::vector<ConvexPiece> pieces = piecesOf(scene, spec, warnings);
+  if (spec.shape == ShapeKind::Plane) {
+    body.x = spec.position_m;
+    return body;
+  }
+  setMassAndFrame(spec, pieces, body);
+  if (!body.is_static) {
+    body.P = body.mass * spec.velocity_m_s;
+    Eigen::Matrix3d R = body.rotation();
+    body.L = R * body.inertia_body.cwiseProduct(R.transpose() * spec.angular_velocity_rad_s);
+  }
+  return body;
+}
+
+}  // namespace
+
+BuiltWorld buildWorld(const Scene& scene) {
+  BuiltWorld out;
+  out.world.gravity = scene.simulation.gravity_m_s2;
+  out.step.dt = scene.simulation.dt_s;
+  out.step.integrator = scene.simulation.integrator;
+  out.world.bodies.reserve(scene.bodies.size());
+  for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
+  return out;
+}
+
+}  // namespace tumble

@@ -1,0 +1,136 @@
+#include "scene/body_reader.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "base/error.h"
+#include "scene/suggest.h"
+
+namespace tumble {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const Range kPositive{0, kInf, true, false};
+
+Eigen::Quaterniond eulerExtrinsic(const Eigen::Vector3d& deg, const std::string& order) {
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  // Extrinsic rotations apply in the order written, each about a fixed world axis, so each one
+  // multiplies on the left: "XYZ" gives Rz * Ry * Rx.
+  for (char axis : order) {
+    int i = axis - 'X';
+    Eigen::Vector3d unit = Eigen::Vector3d::Unit(i);
+    q = Eigen::Quaterniond(Eigen::AngleAxisd(deg[i] * M_PI / 180.0, unit)) * q;
+  }
+  return q;
+}
+
+void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& scene_dir) {
+  auto mesh = in.optionalString("mesh");
+  auto shape = in.has("shape") ? std::optional(readChoice(in, "shape", "", {"box", "sphere", "plane"}))
+                               : std::nullopt;
+  if (mesh && shape) in.fail("shape", "give either \"mesh\" or \"shape\", not both");
+  if (!mesh && !shape)
+    in.fail("", "a body needs \"mesh\" (a file path) or \"shape\" (\"box\", \"sphere\" or \"plane\")");
+  if (mesh) {
+    body.shape = ShapeKind::Mesh;
+    body.mesh = (scene_dir / *mesh).lexically_normal();
+    body.mesh_location = in.locationOf("mesh");
+    std::ifstream probe(body.mesh, std::ios::binary);
+    if (!std::filesystem::is_regular_file(body.mesh) || !probe) {
+      try {
+        in.fail("mesh", "cannot read mesh file " + body.mesh.string());
+      } catch (const Error& e) {
+        throw Error(ExitCode::MissingInput, e.what());
+      }
+    }
+    body.mesh_scale = in.number("scale", 1, kPositive);
+  } else if (*shape == "box") {
+    body.shape = ShapeKind::Box;
+    body.box_size_m = in.vector3("size_m", body.box_size_m, {0, 1e6, true, false});
+  } else if (*shape == "sphere") {
+    body.shape = ShapeKind::Sphere;
+    body.sphere_radius_m = in.number("radius_m", body.sphere_radius_m, {0, 1e6, true, false});
+    body.sphere_subdivisions = in.integer("subdivisions", body.sphere_subdivisions, 1, 6);
+  } else {
+    body.shape = ShapeKind::Plane;
+  }
+}
+
+void readMotionAndMass(ObjectReader& in, BodySpec& body) {
+  body.is_static = in.boolean("static", body.shape == ShapeKind::Plane);
+  if (body.shape == ShapeKind::Plane && !body.is_static)
+    in.fail("static", "a plane is the static ground; it cannot move");
+  body.position_m = in.vector3("position_m", body.position_m);
+  if (body.shape == ShapeKind::Plane) {
+    if (in.has("quat_wxyz") || in.has("rotation_deg"))
+      in.fail(in.has("quat_wxyz") ? "quat_wxyz" : "rotation_deg",
+              "the ground plane is horizontal (normal +z); it takes no rotation");
+  } else {
+    body.orientation = readOrientation(in);
+  }
+  body.velocity_m_s = in.vector3("velocity_m_s", body.velocity_m_s, {-1e5, 1e5});
+  body.angular_velocity_rad_s =
+      in.vector3("angular_velocity_rad_s", body.angular_velocity_rad_s, {-1e5, 1e5});
+  if (body.is_static && (body.velocity_m_s.norm() > 0 || body.angular_velocity_rad_s.norm() > 0))
+    in.fail(in.has("velocity_m_s") ? "velocity_m_s" : "angular_velocity_rad_s",
+            "a static body cannot have a velocity");
+  body.mass_kg = in.optionalNumber("mass_kg", kPositive);
+  body.density_kg_m3 = in.number("density_kg_m3", body.density_kg_m3, kPositive);
+  if (body.mass_kg && in.has("density_kg_m3"))
+    in.fail("density_kg_m3", "give either \"mass_kg\" or \"density_kg_m3\", not both");
+}
+
+}  // namespace
+
+std::string readChoice(ObjectReader& in, const std::string& key, const std::string& fallback,
+                       const std::vector<std::string>& choices) {
+  std::string value = in.string(key, fallback);
+  for (const std::string& c : choices)
+    if (c == value) return value;
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
+  std::string message = "\"" + value + "\" is not one of " + list;
+  std::string near = closestMatch(value, choices);
+  if (!near.empty()) message += "; did you mean \"" + near + "\"?";
+  in.fail(key, message);
+}
+
+Integrator readIntegrator(ObjectReader& in, const std::string& key, Integrator fallback) {
+  std::string name = readChoice(in, key, fallback == Integrator::Rk4 ? "rk4" : "semi_implicit_euler",
+                                {"rk4", "semi_implicit_euler"});
+  return name == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
+}
+
+Eigen::Quaterniond readOrientation(ObjectReader& in) {
+  auto quat = in.optionalVector("quat_wxyz", 4, {-1e6, 1e6});
+  auto euler = in.optionalVector("rotation_deg", 3, {-1e6, 1e6});
+  bool has_order = in.has("rotation_order");
+  std::string order = readChoice(in, "rotation_order", "XYZ", {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"});
+  if (quat && euler) in.fail("rotation_deg", "give either \"quat_wxyz\" or \"rotation_deg\", not both");
+  if (has_order && !euler) in.fail("rotation_order", "\"rotation_order\" goes with \"rotation_deg\"");
+  if (quat) {
+    Eigen::Quaterniond q((*quat)[0], (*quat)[1], (*quat)[2], (*quat)[3]);
+    if (q.norm() < 1e-12) in.fail("quat_wxyz", "a rotation quaternion cannot be zero");
+    return q.normalized();
+  }
+  if (euler) return eulerExtrinsic(*euler, order).normalized();
+  return Eigen::Quaterniond::Identity();
+}
+
+BodySpec readBody(ObjectReader& in, int index, const std::filesystem::path& scene_dir) {
+  BodySpec body;
+  body.name = in.string("name", "body_" + std::to_string(index));
+  if (body.name.empty()) in.fail("name", "a body's name cannot be empty");
+  readShape(in, body, scene_dir);
+  readMotionAndMass(in, body);
+  body.restitution = in.number("restitution", body.restitution, {0, 1});
+  body.friction = in.number("friction", body.friction, {0, 100});
+  if (in.has("color") && in.has("colour")) in.fail("colour", "give \"color\" or \"colour\", not both");
+  // The ground defaults to a neutral grey; bodies to a warm orange that reads against it.
+  Eigen::Vector3d fallback = body.shape == ShapeKind::Plane ? Eigen::Vector3d(0.62, 0.62, 0.62) : body.colour_srgb;
+  body.colour_srgb = in.colour("color", in.colour("colour", fallback));
+  in.rejectUnknownKeys();
+  return body;
+}
+
+}  // namespace tumble

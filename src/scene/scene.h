@@ -1,0 +1,94 @@
+// The scene file's content after loading and validation (schema version 1). Plain data: SI units,
+// world z-up. Every field holds its documented default when the file leaves it out.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tumble {
+
+// Where a value was written, so later stages (mesh import) can point at it in their errors.
+struct SourceLocation {
+  std::string pointer;   // JSON pointer, e.g. "/bodies/2/mesh"
+  int line = 0, column = 0;
+};
+
+enum class ShapeKind { Mesh, Box, Sphere, Plane };
+enum class Integrator { SemiImplicitEuler, Rk4 };
+
+struct BodySpec {
+  std::string name;
+  ShapeKind shape = ShapeKind::Box;
+  std::filesystem::path mesh;                          // absolute, for ShapeKind::Mesh
+  SourceLocation mesh_location;                        // where "mesh" was written
+  double mesh_scale = 1;                               // file units -> metres
+  Eigen::Vector3d box_size_m{1, 1, 1};                 // full edge lengths, for Box
+  double sphere_radius_m = 0.5;                        // for Sphere
+  int sphere_subdivisions = 3;                         // icosphere level (3: 642 vertices)
+  bool is_static = false;                              // planes are always static
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero(); // of the shape's origin (mesh file origin)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();          // of the centre of mass, world
+  Eigen::Vector3d angular_velocity_rad_s = Eigen::Vector3d::Zero(); // world frame
+  double density_kg_m3 = 1000;                         // used unless mass_kg is given
+  std::optional<double> mass_kg;
+  double restitution = 0.5;                            // Newton's coefficient, [0, 1]
+  double friction = 0.5;                               // Coulomb coefficient, >= 0
+  Eigen::Vector3d colour_srgb{0.8, 0.45, 0.2};         // 0..1, as a colour picker shows it
+};
+
+struct CameraSpec {
+  Eigen::Vector3d position_m{6, -8, 4};
+  std::optional<Eigen::Vector3d> look_at_m = Eigen::Vector3d(0, 0, 0.5);
+  std::optional<Eigen::Quaterniond> orientation;       // camera looks along its -z, up its +y
+  Eigen::Vector3d up{0, 0, 1};
+  double fov_y_deg = 45;
+};
+
+struct DirectionalLightSpec {
+  Eigen::Vector3d direction{-0.4, 0.3, -1};            // the way the light travels
+  Eigen::Vector3d colour_srgb{1, 1, 1};
+  double intensity = 1;
+  bool shadows = true;
+};
+
+struct LightingSpec {
+  std::vector<DirectionalLightSpec> directional;       // at least one
+  Eigen::Vector3d ambient_srgb{0.55, 0.57, 0.62};
+  double ambient_intensity = 0.35;
+};
+
+struct RenderSpec {
+  int width = 1280, height = 720;                      // pixels
+  int fps = 30;                                        // frames per second
+  int frames = 120;                                    // frame k (from 1) shows time (k-1)/fps
+  int samples = 4;                                     // MSAA: 1 or 4
+  int shadow_map_size = 2048;                          // texels per side
+  Eigen::Vector3d background_srgb{0.80, 0.86, 0.93};
+  int crf = 23;                                        // H.264 quality
+};
+
+struct SimulationSpec {
+  double dt_s = 1.0 / 240;                             // exactly frame interval / steps_per_frame
+  int steps_per_frame = 8;
+  Integrator integrator = Integrator::Rk4;
+  Eigen::Vector3d gravity_m_s2{0, 0, -9.81};
+};
+
+struct Scene {
+  std::filesystem::path file;                          // the scene file, as given
+  std::string name;                                    // file stem: default output names
+  int schema_version = 1;
+  std::vector<BodySpec> bodies;
+  CameraSpec camera;
+  LightingSpec lighting;
+  RenderSpec render;
+  SimulationSpec simulation;
+  std::optional<std::string> output;                   // default -o, relative to the working dir
+};
+
+}  // namespace tumble

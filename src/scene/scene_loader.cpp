@@ -1,0 +1,182 @@
+#include "scene/scene_loader.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "base/error.h"
+#include "scene/body_reader.h"
+#include "scene/object_reader.h"
+
+namespace tumble {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Refused before any work: a frame this large or a clip this long is a typo, not a request.
+constexpr int kMaxSide = 8192;
+constexpr int kMaxFrames = 1000000;
+
+void readRender(ObjectReader& in, RenderSpec& r) {
+  r.width = in.integer("width", r.width, 16, kMaxSide);
+  r.height = in.integer("height", r.height, 16, kMaxSide);
+  r.fps = in.integer("fps", r.fps, 1, 1000);
+  auto duration = in.optionalNumber("duration_s", {0, kMaxFrames / double(r.fps), true, false});
+  if (duration && in.has("frames")) in.fail("frames", "give either \"duration_s\" or \"frames\", not both");
+  if (duration) r.frames = std::max(1, static_cast<int>(std::lround(*duration * r.fps)));
+  r.frames = in.integer("frames", r.frames, 1, kMaxFrames);
+  r.samples = in.integer("samples", r.samples, 1, 4);
+  if (r.samples == 3) in.fail("samples", "MSAA takes 1, 2 or 4 samples");
+  r.shadow_map_size = in.integer("shadow_map_size", r.shadow_map_size, 256, 8192);
+  r.crf = in.integer("crf", r.crf, 0, 51);
+  if (in.has("background") && in.has("background_color"))
+    in.fail("background_color", "give \"background\" or \"background_color\", not both");
+  r.background_srgb = in.colour("background", in.colour("background_color", r.background_srgb));
+  in.rejectUnknownKeys();
+}
+
+void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps) {
+  sim.integrator = readIntegrator(in, "integrator", sim.integrator);
+  sim.gravity_m_s2 = in.vector3("gravity_m_s2", sim.gravity_m_s2, {-1e4, 1e4});
+  // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
+  // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
+  double dt = in.number("dt_s", sim.dt_s, {0, 0.1, true, false});
+  double interval = 1.0 / fps;
+  double steps = interval / dt;
+  long whole = std::lround(steps);
+  if (whole < 1 || std::abs(steps - whole) > 1e-3 * whole) {
+    long near = std::max(1L, whole);
+    in.fail("dt_s", formatNumber(dt) + " s does not divide the frame interval 1/" +
+                        std::to_string(fps) + " s; try " + formatNumber(interval / near) + " (1/" +
+                        std::to_string(near * fps) + ")");
+  }
+  if (whole > 100000) in.fail("dt_s", "more than 100000 steps per frame; use a larger step");
+  sim.steps_per_frame = static_cast<int>(whole);
+  sim.dt_s = interval / whole;
+  in.rejectUnknownKeys();
+}
+
+void readCamera(ObjectReader& in, CameraSpec& cam) {
+  cam.position_m = in.vector3("position_m", cam.position_m);
+  bool has_look = in.has("look_at_m");
+  bool has_quat = in.has("quat_wxyz") || in.has("rotation_deg");
+  if (has_look && has_quat) in.fail("look_at_m", "give \"look_at_m\" or an orientation, not both");
+  if (has_quat) {
+    cam.orientation = readOrientation(in);
+    cam.look_at_m.reset();
+  } else {
+    cam.look_at_m = in.vector3("look_at_m", *cam.look_at_m);
+    if ((*cam.look_at_m - cam.position_m).norm() < 1e-9)
+      in.fail("look_at_m", "the camera cannot look at its own position");
+    readOrientation(in);  // marks the orientation keys as known
+  }
+  cam.up = in.vector3("up", cam.up, {-1e6, 1e6});
+  if (cam.up.norm() < 1e-12) in.fail("up", "the up vector cannot be zero");
+  cam.fov_y_deg = in.number("fov_y_deg", cam.fov_y_deg, {0, 180, true, true});
+  in.rejectUnknownKeys();
+}
+
+void readLights(ObjectReader& root, const nlohmann::json& list, LightingSpec& lighting,
+                const ParseContext& ctx) {
+  lighting.directional.clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    ObjectReader in(ctx, list[i], root.pointerOf("lights") + "/" + std::to_string(i));
+    std::string type = readChoice(in, "type", "directional", {"directional", "ambient"});
+    Eigen::Vector3d colour = in.colour("color", in.colour("colour", {1, 1, 1}));
+    double intensity = in.number("intensity", type == "ambient" ? 0.35 : 1.0, {0, 1000});
+    if (type == "ambient") {
+      lighting.ambient_srgb = colour;
+      lighting.ambient_intensity = intensity;
+    } else {
+      DirectionalLightSpec light;
+      light.direction = in.vector3("direction", light.direction);
+      if (light.direction.norm() < 1e-12) in.fail("direction", "a light direction cannot be zero");
+      light.colour_srgb = colour;
+      light.intensity = intensity;
+      light.shadows = in.boolean("shadows", lighting.directional.empty());
+      lighting.directional.push_back(light);
+    }
+    in.rejectUnknownKeys();
+  }
+  if (lighting.directional.empty())
+    failAt(ctx, root.pointerOf("lights"), "at least one \"directional\" light is needed");
+}
+
+void readBodies(ObjectReader& root, const ParseContext& ctx, Scene& scene) {
+  const nlohmann::json* list = root.optionalArray("bodies");
+  if (!list) {
+    root.rejectUnknownKeys();  // "bodys" is better answered with "did you mean"
+    failAt(ctx, "", "missing required field \"bodies\" (the list of bodies)");
+  }
+  if (list->empty()) failAt(ctx, "/bodies", "the scene has no bodies");
+  std::filesystem::path dir = scene.file.parent_path();
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    ObjectReader in(ctx, (*list)[i], "/bodies/" + std::to_string(i));
+    scene.bodies.push_back(readBody(in, static_cast<int>(i), dir));
+    if (!names.insert(scene.bodies.back().name).second)
+      in.fail("name", "another body is already named \"" + scene.bodies.back().name + "\"");
+  }
+}
+
+std::string readFile(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec))
+    throw Error(ExitCode::MissingInput, file.string() + ": no such scene file");
+  if (std::filesystem::is_directory(file, ec))
+    throw Error(ExitCode::MissingInput, file.string() + ": is a folder, not a scene file");
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  if (!(in && text << in.rdbuf()))
+    throw Error(ExitCode::MissingInput, file.string() + ": cannot be read");
+  return text.str();
+}
+
+}  // namespace
+
+Scene loadScene(const std::filesystem::path& file) { return parseScene(readFile(file), file); }
+
+Scene parseScene(const std::string& text, const std::filesystem::path& file) {
+  JsonLocations locations(text);
+  ParseContext ctx{file.string(), &locations};
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& e) {
+    TextPosition pos = locations.positionOf(e.byte > 0 ? e.byte - 1 : 0);
+    std::string what = e.what();
+    // nlohmann's message begins "[json.exception.parse_error.101] parse error at line 3, ...: "
+    std::size_t colon = what.find(": ", what.find("parse error"));
+    throw Error(ExitCode::BadInput, file.string() + ":" + std::to_string(pos.line) + ":" +
+                                        std::to_string(pos.column) + ": invalid JSON: " +
+                                        (colon == std::string::npos ? what : what.substr(colon + 2)));
+  }
+  Scene scene;
+  scene.file = file;
+  scene.name = file.stem().string();
+  ObjectReader root(ctx, doc, "");
+  if (!root.has("schema_version"))
+    failAt(ctx, "", "missing required field \"schema_version\" (this tumble reads version 1)");
+  scene.schema_version = root.integer("schema_version", 1, 0, 1000000);
+  if (scene.schema_version != 1)
+    root.fail("schema_version", "this tumble reads schema version 1, not " +
+                                    std::to_string(scene.schema_version));
+  if (auto r = root.optionalObject("render")) readRender(*r, scene.render);
+  if (auto s = root.optionalObject("simulation")) readSimulation(*s, scene.simulation, scene.render.fps);
+  else {
+    nlohmann::json empty = nlohmann::json::object();
+    ObjectReader defaults(ctx, empty, "/simulation");
+    readSimulation(defaults, scene.simulation, scene.render.fps);
+  }
+  if (auto c = root.optionalObject("camera")) readCamera(*c, scene.camera);
+  if (const nlohmann::json* lights = root.optionalArray("lights")) readLights(root, *lights, scene.lighting, ctx);
+  else scene.lighting.directional.assign(1, DirectionalLightSpec{});
+  scene.output = root.optionalString("output");
+  if (scene.output && scene.output->empty()) root.fail("output", "the output path cannot be empty");
+  readBodies(root, ctx, scene);
+  root.rejectUnknownKeys();
+  return scene;
+}
+
+}  // namespace tumble

@@ -1,0 +1,60 @@
+#include "scene/scene_overrides.h"
+
+#include <cmath>
+#include <regex>
+
+#include "base/error.h"
+
+namespace tumble {
+namespace {
+
+[[noreturn]] void usage(const std::string& message) { throw Error(ExitCode::Usage, message); }
+
+}  // namespace
+
+void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
+  if (!(dt_s > 0 && dt_s <= 0.1)) usage(flag + ": the step must be in (0, 0.1] s");
+  double interval = 1.0 / scene.render.fps;
+  long whole = std::lround(interval / dt_s);
+  if (whole < 1 || std::abs(interval / dt_s - whole) > 1e-3 * whole)
+    usage(flag + ": " + std::to_string(dt_s) + " s does not divide the frame interval 1/" +
+          std::to_string(scene.render.fps) + " s; try 1/" +
+          std::to_string(std::max(1L, whole) * scene.render.fps));
+  if (whole > 100000) usage(flag + ": more than 100000 steps per frame");
+  scene.simulation.steps_per_frame = static_cast<int>(whole);
+  scene.simulation.dt_s = interval / whole;
+}
+
+void setFrameRate(Scene& scene, int fps) {
+  if (fps < 1 || fps > 1000) usage("--fps: " + std::to_string(fps) + " is outside [1, 1000]");
+  double duration = scene.render.frames / double(scene.render.fps);
+  double dt = scene.simulation.dt_s;
+  scene.render.fps = fps;
+  scene.render.frames = std::max(1, static_cast<int>(std::lround(duration * fps)));
+  long whole = std::max(1L, std::lround(1.0 / fps / dt));
+  scene.simulation.steps_per_frame = static_cast<int>(whole);
+  scene.simulation.dt_s = 1.0 / fps / whole;
+}
+
+void setDuration(Scene& scene, double duration_s) {
+  if (!(duration_s > 0) || duration_s * scene.render.fps > 1e6)
+    usage("--duration: must be positive and at most 1000000 frames long");
+  scene.render.frames = std::max(1, static_cast<int>(std::lround(duration_s * scene.render.fps)));
+}
+
+void setFrameCount(Scene& scene, int frames) {
+  if (frames < 1 || frames > 1000000) usage("--frame-count: must be in [1, 1000000]");
+  scene.render.frames = frames;
+}
+
+void setSize(Scene& scene, const std::string& size) {
+  std::smatch m;
+  static const std::regex form(R"((\d{1,5})x(\d{1,5}))");
+  if (!std::regex_match(size, m, form)) usage("--size: expected WIDTHxHEIGHT, e.g. 1280x720, got \"" + size + "\"");
+  int w = std::stoi(m[1]), h = std::stoi(m[2]);
+  if (w < 16 || h < 16 || w > 8192 || h > 8192) usage("--size: each side must be in [16, 8192]");
+  scene.render.width = w;
+  scene.render.height = h;
+}
+
+}  // namespace tumble

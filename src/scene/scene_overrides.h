@@ -1,0 +1,22 @@
+// Command-line overrides of scene settings (--fps, --duration, --dt, ...). They go through the
+// same checks as the file, so an override can never make a scene the loader would refuse.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace tumble {
+
+// Chooses the whole number of steps per frame closest to interval / dt and makes dt divide the
+// frame interval exactly. Throws Error(Usage) when `dt_s` is not within 0.1 % of such a step.
+void setTimeStep(Scene& scene, double dt_s, const std::string& flag);
+// A new frame rate keeps the step (dt) as close as the new frame interval allows.
+void setFrameRate(Scene& scene, int fps);
+void setDuration(Scene& scene, double duration_s);
+void setFrameCount(Scene& scene, int frames);
+// "1280x720" -> width and height. Throws Error(Usage) on anything else.
+void setSize(Scene& scene, const std::string& size);
+
+}  // namespace tumble
