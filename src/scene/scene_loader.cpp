@@ -41,11 +41,13 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps) {
   sim.gravity_m_s2 = in.vector3("gravity_m_s2", sim.gravity_m_s2, {-1e4, 1e4});
   // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
   // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
+  // Without dt_s the step is the one nearest 1/240 s that divides the frame interval.
+  bool given = in.has("dt_s");
   double dt = in.number("dt_s", sim.dt_s, {0, 0.1, true, false});
   double interval = 1.0 / fps;
   double steps = interval / dt;
-  long whole = std::lround(steps);
-  if (whole < 1 || std::abs(steps - whole) > 1e-3 * whole) {
+  long whole = std::max(1L, std::lround(steps));
+  if (given && std::abs(steps - whole) > 1e-3 * whole) {
     long near = std::max(1L, whole);
     in.fail("dt_s", formatNumber(dt) + " s does not divide the frame interval 1/" +
                         std::to_string(fps) + " s; try " + formatNumber(interval / near) + " (1/" +
@@ -133,6 +135,28 @@ std::string readFile(const std::filesystem::path& file) {
   return text.str();
 }
 
+// nlohmann's messages begin "[json.exception.parse_error.101] parse error at line 3, column 4: ";
+// we keep what follows and put the position in our own "file:line:column:" form.
+std::string describeJsonError(const nlohmann::json::exception& e, const std::string& text,
+                              const JsonLocations& locations, const std::filesystem::path& file) {
+  std::string what = e.what();
+  TextPosition pos{};
+  if (auto* parse = dynamic_cast<const nlohmann::json::parse_error*>(&e)) {
+    pos = locations.positionOf(parse->byte > 0 ? parse->byte - 1 : 0);
+  } else if (std::size_t q = what.find('\''); q != std::string::npos) {
+    // "number overflow parsing '1e999'": find the number in the text to say where it is.
+    std::string token = what.substr(q + 1, what.rfind('\'') - q - 1);
+    if (std::size_t at = text.find(token); at != std::string::npos) pos = locations.positionOf(at);
+  }
+  std::size_t colon = what.find(": ", what.find("parse error"));
+  std::string detail = colon != std::string::npos && what.find("parse error") != std::string::npos
+                           ? what.substr(colon + 2)
+                           : what.substr(what.find(']') + 2);
+  std::string where = file.string();
+  if (pos.line > 0) where += ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
+  return where + ": invalid JSON: " + detail;
+}
+
 }  // namespace
 
 Scene loadScene(const std::filesystem::path& file) { return parseScene(readFile(file), file); }
@@ -143,14 +167,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::parse_error& e) {
-    TextPosition pos = locations.positionOf(e.byte > 0 ? e.byte - 1 : 0);
-    std::string what = e.what();
-    // nlohmann's message begins "[json.exception.parse_error.101] parse error at line 3, ...: "
-    std::size_t colon = what.find(": ", what.find("parse error"));
-    throw Error(ExitCode::BadInput, file.string() + ":" + std::to_string(pos.line) + ":" +
-                                        std::to_string(pos.column) + ": invalid JSON: " +
-                                        (colon == std::string::npos ? what : what.substr(colon + 2)));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(ExitCode::BadInput, describeJsonError(e, text, locations, file));
   }
   Scene scene;
   scene.file = file;

@@ -22,8 +22,8 @@ int editDistance(const std::string& a, const std::string& b) {
 }
 
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
-  // A third of the length allows "restitusion" and "colour_rgb"/"color_rgb" but not "mass"/"name".
-  int limit = std::clamp(static_cast<int>(word.size()) / 3, 1, 3);
+  // About a third of the length: allows "restitusion" and "bodys" but not "mass" for "name".
+  int limit = std::clamp((static_cast<int>(word.size()) + 2) / 3, 1, 3);
   std::string best;
   int best_distance = limit + 1;
   for (const std::string& c : candidates) {

@@ -1,0 +1,89 @@
+// Scene -> World: exact mass properties, bodies placed where the scene says, errors located.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "base/error.h"
+#include "dynamics/world_builder.h"
+#include "scene/scene_loader.h"
+
+using namespace tumble;
+
+namespace {
+
+std::filesystem::path tempDir() {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / "tumble_world_builder_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("a box's mass and inertia follow from its density", "[dynamics]") {
+  Scene s = parseScene(R"({"schema_version": 1, "bodies": [
+    {"shape": "box", "size_m": [1, 2, 3], "density_kg_m3": 500}]})", "b.json");
+  BuiltWorld built = buildWorld(s);
+  const RigidBody& b = built.world.bodies[0];
+  double m = 500 * 6;
+  CHECK(b.mass == Approx(m).epsilon(1e-12));
+  // m/12 (b^2 + c^2, a^2 + c^2, a^2 + b^2), in ascending order (principal frame convention)
+  CHECK(b.inertia_body.x() == Approx(m / 12 * (1 + 4)).epsilon(1e-12));
+  CHECK(b.inertia_body.y() == Approx(m / 12 * (1 + 9)).epsilon(1e-12));
+  CHECK(b.inertia_body.z() == Approx(m / 12 * (4 + 9)).epsilon(1e-12));
+  // The body frame's z axis (largest moment) is the box's x axis.
+  CHECK(std::abs(b.rotation().col(2).x()) == Approx(1).epsilon(1e-12));
+}
+
+TEST_CASE("mass_kg scales a body's inertia with its mass", "[dynamics]") {
+  Scene s = parseScene(R"({"schema_version": 1, "bodies": [
+    {"shape": "box", "size_m": [1, 1, 1], "mass_kg": 2}]})", "b.json");
+  BuiltWorld built = buildWorld(s);
+  const RigidBody& b = built.world.bodies[0];
+  CHECK(b.mass == Approx(2));
+  CHECK(b.inertia_body.x() == Approx(2.0 / 6));
+}
+
+TEST_CASE("a mesh body's centre of mass sits where the scene places the mesh", "[dynamics]") {
+  std::filesystem::path dir = tempDir();
+  // A unit cube whose file origin is at one corner: its centre of mass is (0.5, 0.5, 0.5) in file
+  // coordinates, so placed at (10, 0, 0) rotated 90 deg about z it lands at (9.5, 0.5, 0.5).
+  std::ofstream(dir / "corner_cube.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                            "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                            "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  std::ofstream(dir / "s.json") << R"({"schema_version": 1, "bodies": [
+    {"mesh": "corner_cube.obj", "position_m": [10, 0, 0], "rotation_deg": [0, 0, 90]}]})";
+  BuiltWorld built = buildWorld(loadScene(dir / "s.json"));
+  const RigidBody& b = built.world.bodies[0];
+  CHECK((b.x - Eigen::Vector3d(9.5, 0.5, 0.5)).norm() < 1e-12);
+  CHECK(b.mass == Approx(1000));
+  // The pieces are in the principal frame: their centroid is the origin.
+  REQUIRE(b.pieces[0].vertices.size() == 8);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& v : b.pieces[0].vertices) sum += v;
+  CHECK((sum / 8).norm() < 1e-12);
+}
+
+TEST_CASE("an unusable mesh is reported at the body's mesh field", "[dynamics]") {
+  std::filesystem::path dir = tempDir();
+  std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(dir / "flat.json") << "{\"schema_version\": 1,\n \"bodies\": [\n  {\"mesh\": \"flat.obj\"}]}";
+  try {
+    buildWorld(loadScene(dir / "flat.json"));
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::Contains("flat.json:3:12: /bodies/0/mesh: "));
+    CHECK_THAT(e.what(), Catch::Contains("flat.obj"));
+  }
+}
+
+TEST_CASE("initial velocities become momenta", "[dynamics]") {
+  Scene s = parseScene(R"({"schema_version": 1, "bodies": [
+    {"shape": "box", "size_m": [1, 0.4, 0.1], "mass_kg": 1, "rotation_deg": [30, 20, 10],
+     "velocity_m_s": [1, 2, 3], "angular_velocity_rad_s": [0.3, -0.2, 0.1]}]})", "b.json");
+  BuiltWorld built = buildWorld(s);
+  const RigidBody& b = built.world.bodies[0];
+  CHECK((b.velocity() - Eigen::Vector3d(1, 2, 3)).norm() < 1e-12);
+  CHECK((b.angularVelocity() - Eigen::Vector3d(0.3, -0.2, 0.1)).norm() < 1e-12);
+}
