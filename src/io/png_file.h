@@ -9,8 +9,9 @@
 namespace tumble {
 
 // Writes atomically: to a temporary name in the same folder, then renamed. Throws
-// tumble::Error(CantCreate) naming the path when it cannot.
-void writePng(const std::filesystem::path& path, const RgbImage& image);
+// tumble::Error(CantCreate) naming the path when it cannot. With `overwrite` false an existing
+// file is never replaced (CantCreate instead), even if it appears while this frame is encoded.
+void writePng(const std::filesystem::path& path, const RgbImage& image, bool overwrite = true);
 // Throws tumble::Error(MissingInput) when absent, BadInput when not a readable PNG.
 RgbImage readPng(const std::filesystem::path& path);
 

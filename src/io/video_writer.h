@@ -15,7 +15,16 @@ struct VideoSettings {
   int fps = 30;                     // frames per second
   int crf = 23;                     // x264 constant rate factor: 0 lossless .. 51 worst
   std::string preset = "veryfast";  // x264 preset
+  // Encoder threads; 0 lets x264 choose from the core count. Output bytes are identical run to
+  // run for a given count, but differ between counts: fix it (e.g. 4) for byte-identical videos
+  // across machines.
+  int threads = 0;
 };
+
+// libav and x264 print statistics and notes on stderr, which would break up the progress bar.
+// Unless this is called, the first VideoWriter limits them to warnings and errors; `--verbose`
+// can call setVideoLogVerbose(true) to see everything.
+void setVideoLogVerbose(bool verbose);
 
 class VideoWriter {
  public:

@@ -1,0 +1,64 @@
+#include "io/atomic_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "base/error.h"
+
+namespace tumble {
+
+namespace fs = std::filesystem;
+
+fs::path temporarySibling(const fs::path& final_path, std::string_view tag, bool keep_extension) {
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) about `"." + std::string`.
+  std::string name(1, '.');
+  name += final_path.filename().string();
+  name += '.';
+  name += tag;
+  name += '-';
+  name += std::to_string(::getpid());
+  if (keep_extension) name += final_path.extension().string();
+  return final_path.parent_path() / name;
+}
+
+void throwCantWrite(const fs::path& path, std::string_view reason) {
+  throw Error(ExitCode::CantCreate, "cannot write " + path.string() + ": " + std::string(reason));
+}
+
+namespace {
+
+// Rename that refuses to replace. Falls back to a check-then-rename on file systems without
+// RENAME_NOREPLACE (EINVAL), where the small race is the best we can do.
+int renameNoReplace(const fs::path& from, const fs::path& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return 0;
+  if (errno != EINVAL && errno != ENOSYS) return errno;
+  std::error_code ec;
+  if (fs::exists(to, ec)) return EEXIST;
+  return std::rename(from.c_str(), to.c_str()) == 0 ? 0 : errno;
+}
+
+}  // namespace
+
+void commitFile(const fs::path& temp, const fs::path& final_path, bool overwrite) {
+  int err = 0;
+  if (overwrite) {
+    err = std::rename(temp.c_str(), final_path.c_str()) == 0 ? 0 : errno;
+  } else {
+    err = renameNoReplace(temp, final_path);
+  }
+  if (err == 0) return;
+  std::error_code ignored;
+  fs::remove(temp, ignored);
+  if (err == EEXIST) {
+    throwCantWrite(final_path, "it already exists (use -y/--overwrite to replace it)");
+  }
+  throwCantWrite(final_path, std::strerror(err));
+}
+
+}  // namespace tumble

@@ -1,0 +1,25 @@
+// Outputs appear whole or not at all: every file tumble writes goes to a hidden temporary sibling
+// first and is renamed onto its final name only when complete. A rename within one folder is atomic
+// on POSIX file systems, so a reader (or a resumed render) never sees half a frame.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+namespace tumble {
+
+// ".NAME.TAG-PID" next to `final_path`. With `keep_extension`, the extension is repeated at the
+// end (".drop.mp4.partial-123.mp4") so tools that guess the format from the name still can.
+std::filesystem::path temporarySibling(const std::filesystem::path& final_path,
+                                       std::string_view tag, bool keep_extension = false);
+
+// Renames `temp` onto `final_path`. Without `overwrite` an existing final file is never replaced,
+// even one created by another process in the meantime (renameat2 RENAME_NOREPLACE). On failure the
+// temporary file is removed and Error(CantCreate) names the final path.
+void commitFile(const std::filesystem::path& temp, const std::filesystem::path& final_path,
+                bool overwrite);
+
+// Error(CantCreate) "cannot write PATH: REASON", the one wording for unwritable outputs.
+[[noreturn]] void throwCantWrite(const std::filesystem::path& path, std::string_view reason);
+
+}  // namespace tumble

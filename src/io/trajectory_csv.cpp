@@ -1,0 +1,93 @@
+#include "io/trajectory_csv.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <system_error>
+
+#include "base/error.h"
+#include "io/atomic_file.h"
+
+namespace tumble {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kHeader = "time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
+constexpr std::size_t kFlushBytes = 1 << 16;
+
+void appendNumber(std::string& out, double value) {
+  char text[32];   // the longest shortest-round-trip double is 24 characters
+  auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+  out.append(text, end);
+}
+
+void appendName(std::string& out, const std::string& name) {
+  if (name.find_first_of(",\"\r\n") == std::string::npos) {
+    out += name;
+    return;
+  }
+  out += '"';
+  for (char c : name) {
+    if (c == '"') out += '"';   // a quote inside quotes is doubled
+    out += c;
+  }
+  out += '"';
+}
+
+}  // namespace
+
+CsvTrajectoryWriter::CsvTrajectoryWriter(const fs::path& path, bool overwrite)
+    : path_(path), temp_(temporarySibling(path, "tmp")), overwrite_(overwrite) {
+  std::error_code ec;
+  if (!overwrite_ && fs::exists(path_, ec)) {
+    throwCantWrite(path_, "it already exists (use -y/--overwrite to replace it)");
+  }
+  file_ = std::fopen(temp_.c_str(), "wb");
+  if (!file_) throwCantWrite(path_, std::strerror(errno));
+  buffer_ = kHeader;
+  buffer_ += '\n';
+}
+
+CsvTrajectoryWriter::~CsvTrajectoryWriter() {
+  if (!file_) return;
+  std::fclose(file_);
+  std::error_code ignored;
+  fs::remove(temp_, ignored);
+}
+
+void CsvTrajectoryWriter::row(double time, const std::string& body, const double values[kValues]) {
+  appendNumber(buffer_, time);
+  buffer_ += ',';
+  appendName(buffer_, body);
+  for (int i = 0; i < kValues; ++i) {
+    buffer_ += ',';
+    appendNumber(buffer_, values[i]);
+  }
+  buffer_ += '\n';
+  if (buffer_.size() >= kFlushBytes) flush();
+}
+
+void CsvTrajectoryWriter::flush() {
+  if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+    throwCantWrite(path_, std::strerror(errno));
+  }
+  buffer_.clear();
+}
+
+void CsvTrajectoryWriter::close() {
+  if (!file_) return;
+  flush();
+  std::FILE* file = file_;
+  file_ = nullptr;
+  if (std::fclose(file) != 0) {
+    int err = errno;
+    std::error_code ignored;
+    fs::remove(temp_, ignored);
+    throwCantWrite(path_, std::strerror(err));
+  }
+  commitFile(temp_, path_, overwrite_);
+}
+
+}  // namespace tumble
