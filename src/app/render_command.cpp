@@ -13,6 +13,7 @@
 #include "dynamics/world_builder.h"
 #include "io/make_frame_sink.h"
 #include "io/output_path.h"
+#include "io/video_sink.h"
 #include "render/renderer.h"
 #include "scene/scene_overrides.h"
 
@@ -45,9 +46,12 @@ void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
 // Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
 // drops the frames whose PNG is already there (resuming an interrupted render).
 void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::vector<int>& frames) {
+  if (o.skip_existing && target.kind == OutputTarget::Kind::Video)
+    throw Error(ExitCode::Usage, "--skip-existing works with PNG sequences; a video is one file (use -y to replace it)");
+  if (o.skip_existing && o.overwrite) throw Error(ExitCode::Usage, "--skip-existing and --overwrite contradict each other");
   std::vector<std::filesystem::path> existing = existingOutputs(target, frames);
   if (existing.empty() || o.overwrite) return;
-  if (o.skip_existing && target.kind == OutputTarget::Kind::PngSequence) {
+  if (o.skip_existing) {
     std::erase_if(frames, [&](int f) { return std::filesystem::exists(framePath(target, f)); });
     return;
   }
@@ -122,20 +126,27 @@ int run(const RenderOptions& o) {
     times.encode += secondsSince(start);
     progress.update(++done);
   }
+  bool interrupted = done < static_cast<int>(frames.size());
+  std::string written = sink->describe();
   start = std::chrono::steady_clock::now();
-  sink->finish();
+  if (interrupted && target.kind == OutputTarget::Kind::Video) {
+    // An interrupted video is finalised (playable) under a ".partial" name, never the final one.
+    sink.reset();
+    written = VideoSink::partialPath(target.path).string();
+  } else {
+    sink->finish();
+  }
   times.encode += secondsSince(start);
   progress.finish();
   double wall = secondsSince(total_start);
 
-  bool interrupted = done < static_cast<int>(frames.size());
   if (!o.scene.quiet || interrupted) {
     double simulated = trajectory.times.back();
     std::fprintf(stderr,
                  "tumble: %s %d of %zu frames (%.3f s simulated) to %s in %s: simulate %s, render %s, "
                  "read back %s, encode %s (%.1f frames/s)\n",
                  interrupted ? "interrupted after" : "rendered", done, frames.size(), simulated,
-                 sink->describe().c_str(), formatSeconds(wall).c_str(), formatSeconds(times.simulate).c_str(),
+                 written.c_str(), formatSeconds(wall).c_str(), formatSeconds(times.simulate).c_str(),
                  formatSeconds(times.render).c_str(), formatSeconds(times.read_back).c_str(),
                  formatSeconds(times.encode).c_str(), done / std::max(wall, 1e-9));
   }
