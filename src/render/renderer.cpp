@@ -1,0 +1,233 @@
+// The OSMesa renderer: owns the context and GL objects, and runs the frame as
+//   shadow pass (bodies' depth from the shadow light) -> lit pass (ground, bodies) -> resolve.
+#include "render/renderer.h"
+
+#include "base/error.h"
+#include "render/camera_matrices.h"
+#include "render/gl_check.h"
+#include "render/gl_mesh.h"
+#include "render/gl_program.h"
+#include "render/instance_data.h"
+#include "render/lighting.h"
+#include "render/osmesa_context.h"
+#include "render/pixel_convert.h"
+#include "render/render_targets.h"
+#include "render/shader_programs.h"
+#include "render/shadow_map.h"
+
+namespace tumble {
+
+namespace {
+
+using namespace tumble::render;
+
+class GlRenderer final : public Renderer {
+ public:
+  explicit GlRenderer(const RenderConfig& config);
+  ~GlRenderer() override;
+
+  int addMesh(const DrawMesh& mesh) override;
+  void draw(const DrawFrame& frame) override;
+  void readBack(RgbImage& out) override;
+
+ private:
+  void createGround();
+  void drawShadowPass(const FrameLighting& lit);
+  void drawGround(const DrawFrame& frame, const FrameLighting& lit,
+                  const Eigen::Matrix4f& view_proj);
+  void drawGroundRect(const DrawFrame& frame, const FrameLighting& lit,
+                      const LightingVariant& variant, const Eigen::AlignedBox2f& rect,
+                      const Eigen::Matrix4f& view_proj);
+  void drawBodies(const DrawFrame& frame, const FrameLighting& lit,
+                  const Eigen::Matrix4f& view_proj);
+  void drawBatches() const;
+
+  RenderConfig config_;
+  OsmesaContext context_;  // first member: GL objects below are deleted while it still exists
+  std::unique_ptr<RenderTargets> targets_;
+  std::unique_ptr<ShadowMap> shadow_map_;
+  std::unique_ptr<ShaderPrograms> programs_;
+  std::vector<std::unique_ptr<GlMesh>> meshes_;
+  std::vector<BoundingSphere> mesh_bounds_;
+  GLuint instance_buffer_ = 0, ground_vao_ = 0, ground_vbo_ = 0;
+  PackedInstances packed_;              // reused each frame to avoid reallocating
+  std::vector<std::uint8_t> rgba_;
+  bool has_frame_ = false;
+};
+
+GlRenderer::GlRenderer(const RenderConfig& config) : config_(config) {
+  const std::filesystem::path dir =
+      config.shader_dir.empty() ? std::filesystem::path(TUMBLE_DEFAULT_SHADER_DIR)
+                                : config.shader_dir;
+  targets_ = std::make_unique<RenderTargets>(config.width, config.height, config.samples);
+  shadow_map_ = std::make_unique<ShadowMap>(config.shadow_map_size);
+  programs_ = std::make_unique<ShaderPrograms>(dir);
+  glGenBuffers(1, &instance_buffer_);
+  createGround();
+  throwIfGlError("setting up the renderer");
+}
+
+GlRenderer::~GlRenderer() {
+  try {
+    context_.makeCurrent();
+  } catch (const Error&) {
+    return;  // the context is unusable; destroying it releases its objects anyway
+  }
+  glDeleteBuffers(1, &instance_buffer_);
+  glDeleteBuffers(1, &ground_vbo_);
+  glDeleteVertexArrays(1, &ground_vao_);
+  meshes_.clear();
+  programs_.reset();
+  shadow_map_.reset();
+  targets_.reset();
+}
+
+void GlRenderer::createGround() {
+  // Two counter-clockwise triangles seen from above (+z), over the unit square.
+  const float corners[] = {0, 0, 1, 0, 1, 1, 0, 0, 1, 1, 0, 1};
+  glGenVertexArrays(1, &ground_vao_);
+  glGenBuffers(1, &ground_vbo_);
+  glBindVertexArray(ground_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, ground_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glBindVertexArray(0);
+}
+
+int GlRenderer::addMesh(const DrawMesh& mesh) {
+  context_.makeCurrent();
+  auto gl_mesh = std::make_unique<GlMesh>(mesh);
+  mesh_bounds_.push_back({gl_mesh->boundCentre(), gl_mesh->boundRadius()});
+  meshes_.push_back(std::move(gl_mesh));
+  throwIfGlError("uploading a mesh");
+  return static_cast<int>(meshes_.size()) - 1;
+}
+
+void GlRenderer::draw(const DrawFrame& frame) {
+  context_.makeCurrent();
+  const float aspect = static_cast<float>(config_.width) / static_cast<float>(config_.height);
+  const Eigen::Matrix4f view_proj = cameraViewProjection(frame.camera, aspect);
+  packInstances(frame.instances, static_cast<int>(meshes_.size()), frame.camera.eye, packed_);
+  const FrameLighting lit =
+      frameLighting(frame, boundInstances(frame.instances, mesh_bounds_), config_.shadow_map_size);
+
+  glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(packed_.data.size() * sizeof(float)),
+               packed_.data.data(), GL_STREAM_DRAW);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  if (lit.shadows) drawShadowPass(lit);
+
+  targets_->beginPass();
+  // The background is linear like every colour in the draw list; encode it as the shaders do.
+  glClearColor(encodeSrgb(frame.background.x()), encodeSrgb(frame.background.y()),
+               encodeSrgb(frame.background.z()), 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  shadow_map_->bindTexture(GL_TEXTURE0);
+  // Bodies first: the ground behind them then fails the depth test instead of being shaded.
+  drawBodies(frame, lit, view_proj);
+  if (frame.ground.present) drawGround(frame, lit, view_proj);
+  targets_->resolve();
+  throwIfGlError("drawing a frame");
+  has_frame_ = true;
+}
+
+void GlRenderer::drawShadowPass(const FrameLighting& lit) {
+  shadow_map_->beginPass();
+  // Meshes are closed and counter-clockwise from outside, so the faces turned towards the light
+  // are the whole outline: culling the others halves the fill of this pass.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  const GlProgram& program = programs_->shadow();
+  program.use();
+  glUniformMatrix4fv(program.uniform("u_light_view_proj"), 1, GL_FALSE,
+                     lit.shadow.view_projection.data());
+  drawBatches();
+  shadow_map_->endPass();
+}
+
+void GlRenderer::drawGround(const DrawFrame& frame, const FrameLighting& lit,
+                           const Eigen::Matrix4f& view_proj) {
+  glDisable(GL_CULL_FACE);  // seen from below it should still hide what is under it
+  const DrawGround& g = frame.ground;
+  const Eigen::AlignedBox2f whole(Eigen::Vector2f::Constant(-g.extent_m),
+                                  Eigen::Vector2f::Constant(g.extent_m));
+  // Shadow lookups are the ground's largest cost and llvmpipe pays for them on every pixel of a
+  // draw, so only the rectangle where shadows can fall is drawn with them. The whole ground then
+  // goes on top without shadows, pushed back in depth by a pixel's slope so it loses the depth
+  // test inside that rectangle (a same-plane tie would speckle) and wins everywhere else. No body
+  // can be hidden by the push: every body lies inside the shadow box, so its contacts with the
+  // ground lie inside the rectangle.
+  std::optional<Eigen::AlignedBox2f> shadowed;
+  if (lit.shadows) shadowed = shadowFootprint(lit.shadow, g.height);
+  if (shadowed) shadowed = shadowed->intersection(whole);
+  if (shadowed && !shadowed->isEmpty()) {
+    drawGroundRect(frame, lit, lit.variant(), *shadowed, view_proj);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 8.0f);
+  }
+  drawGroundRect(frame, lit, {lit.variant().lights, false}, whole, view_proj);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void GlRenderer::drawGroundRect(const DrawFrame& frame, const FrameLighting& lit,
+                                const LightingVariant& variant, const Eigen::AlignedBox2f& rect,
+                                const Eigen::Matrix4f& view_proj) {
+  const GlProgram& p = programs_->ground(variant);
+  p.use();
+  applyLighting(p, frame, lit);
+  const DrawGround& g = frame.ground;
+  glUniformMatrix4fv(p.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
+  glUniform4f(p.uniform("u_ground_rect"), rect.min().x(), rect.min().y(), rect.max().x(),
+              rect.max().y());
+  glUniform1f(p.uniform("u_ground_height"), g.height);
+  glUniform3fv(p.uniform("u_colour_a"), 1, g.colour_a.data());
+  glUniform3fv(p.uniform("u_colour_b"), 1, g.colour_b.data());
+  glUniform1f(p.uniform("u_checker_m"), g.checker_m);
+  glBindVertexArray(ground_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+void GlRenderer::drawBodies(const DrawFrame& frame, const FrameLighting& lit,
+                            const Eigen::Matrix4f& view_proj) {
+  if (packed_.batches.empty()) return;
+  // Triangles are counter-clockwise seen from outside, so back faces are never visible on
+  // closed bodies: culling them halves the fragment work.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  const GlProgram& program = programs_->lit(lit.variant());
+  program.use();
+  applyLighting(program, frame, lit);
+  glUniformMatrix4fv(program.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
+  drawBatches();
+}
+
+void GlRenderer::drawBatches() const {
+  for (const InstanceBatch& batch : packed_.batches) {
+    const GlMesh& mesh = *meshes_[static_cast<std::size_t>(batch.mesh)];
+    if (mesh.vertexCount() == 0) continue;
+    mesh.bindWithInstances(instance_buffer_, batch.first);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, mesh.vertexCount(),
+                          static_cast<GLsizei>(batch.count));
+  }
+  glBindVertexArray(0);
+}
+
+void GlRenderer::readBack(RgbImage& out) {
+  if (!has_frame_) {
+    throw Error(ExitCode::Software, "Renderer::readBack called before any draw");
+  }
+  context_.makeCurrent();
+  targets_->readRgba(rgba_);
+  throwIfGlError("reading the frame back");
+  rgbaBottomUpToRgbTopDown(rgba_, config_.width, config_.height, out);
+}
+
+}  // namespace
+
+std::unique_ptr<Renderer> Renderer::create(const RenderConfig& config) {
+  return std::make_unique<GlRenderer>(config);
+}
+
+}  // namespace tumble

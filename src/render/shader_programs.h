@@ -1,0 +1,43 @@
+// The renderer's GLSL programs, in variants compiled on first use. The light count and whether
+// shadows are on are compile-time constants of a variant rather than uniforms, because llvmpipe
+// runs fragments as SIMD lanes and pays for both sides of every branch and for every trip of a
+// loop with a run-time bound: a variant with the light loop unrolled and no dead shadow code was
+// measured about twice as fast on the ground (1280x720).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "render/gl_program.h"
+
+namespace tumble::render {
+
+struct LightingVariant {
+  int lights = 1;        // number of directional lights, 0..kMaxLights
+  bool shadows = true;   // light 0 casts shadows
+  auto operator<=>(const LightingVariant&) const = default;
+};
+
+class ShaderPrograms {
+ public:
+  // Compiles the common variants now, so a missing or broken shader is reported at start-up
+  // (Error MissingInput / BadInput, see GlProgram).
+  explicit ShaderPrograms(std::filesystem::path dir);
+
+  const GlProgram& lit(const LightingVariant& variant) { return get(lit_, "lit", variant); }
+  const GlProgram& ground(const LightingVariant& variant) {
+    return get(ground_, "ground", variant);
+  }
+  const GlProgram& shadow() const { return *shadow_; }
+
+ private:
+  using Cache = std::map<LightingVariant, std::unique_ptr<GlProgram>>;
+  const GlProgram& get(Cache& cache, const char* name, const LightingVariant& variant);
+
+  std::filesystem::path dir_;
+  Cache lit_, ground_;
+  std::unique_ptr<GlProgram> shadow_;
+};
+
+}  // namespace tumble::render

@@ -1,0 +1,194 @@
+// The renderer end to end at 160x120: what lands where in the picture, shadows, orientation,
+// determinism and the errors a user can hit.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "base/error.h"
+#include "box_mesh.h"
+#include "render/camera_matrices.h"
+#include "render/pixel_convert.h"
+#include "render/renderer.h"
+
+using namespace tumble;
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+
+RenderConfig smallConfig() {
+  RenderConfig config;
+  config.width = kWidth;
+  config.height = kHeight;
+  config.shadow_map_size = 512;
+  config.shader_dir = std::filesystem::path(TUMBLE_SOURCE_DIR) / "shaders";
+  return config;
+}
+
+// A red unit box floating 0.5 m above an evenly grey ground (no checker, so shadow and lit ground
+// compare fairly), lit from the upper left so its shadow falls beside it, towards +x.
+DrawFrame boxFrame() {
+  DrawFrame frame;
+  frame.camera.eye = {0, -6, 2};
+  frame.camera.target = {0, 0, 1};
+  frame.lights.push_back(DirectionalLight{{1, 0.3f, -1}, {1, 1, 1}, 1.0f, true});
+  frame.ground.present = true;
+  frame.ground.colour_b = frame.ground.colour_a;
+  DrawInstance box;
+  box.model.translation() = Eigen::Vector3f(0, 0, 1);
+  box.colour = {0.8f, 0.05f, 0.05f};
+  frame.instances.push_back(box);
+  return frame;
+}
+
+struct Pixel {
+  int r, g, b;
+  int sum() const { return r + g + b; }
+};
+
+Pixel at(const RgbImage& img, int x, int y) {
+  const std::size_t i = (static_cast<std::size_t>(y) * img.width + x) * 3;
+  return {img.pixels[i], img.pixels[i + 1], img.pixels[i + 2]};
+}
+
+Pixel atWorld(const RgbImage& img, const DrawFrame& frame, const Eigen::Vector3f& p) {
+  const Eigen::Matrix4f vp = render::cameraViewProjection(frame.camera, float(kWidth) / kHeight);
+  const Eigen::Vector4f c = vp * p.homogeneous();
+  const int x = static_cast<int>((c.x() / c.w() * 0.5f + 0.5f) * kWidth);
+  const int y = static_cast<int>((0.5f - 0.5f * c.y() / c.w()) * kHeight);  // row 0 at the top
+  REQUIRE(x >= 0);
+  REQUIRE(x < kWidth);
+  REQUIRE(y >= 0);
+  REQUIRE(y < kHeight);
+  return at(img, x, y);
+}
+
+Pixel backgroundPixel(const DrawFrame& frame) {
+  auto enc = [](float v) { return static_cast<int>(render::encodeSrgb(v) * 255.0f + 0.5f); };
+  return {enc(frame.background.x()), enc(frame.background.y()), enc(frame.background.z())};
+}
+
+bool near(Pixel a, Pixel b, int tolerance = 2) {
+  return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
+         std::abs(a.b - b.b) <= tolerance;
+}
+
+RgbImage renderOnce(const RenderConfig& config, const DrawFrame& frame) {
+  auto renderer = Renderer::create(config);
+  renderer->addMesh(test::boxMesh({0.5f, 0.5f, 0.5f}));
+  renderer->draw(frame);
+  RgbImage img;
+  renderer->readBack(img);
+  return img;
+}
+
+}  // namespace
+
+TEST_CASE("a box above the ground lands where the camera says, with its shadow", "[render]") {
+  const DrawFrame frame = boxFrame();
+  const RgbImage img = renderOnce(smallConfig(), frame);
+  REQUIRE(img.width == kWidth);
+  REQUIRE(img.height == kHeight);
+  REQUIRE(img.pixels.size() == std::size_t(kWidth * kHeight * 3));
+
+  SECTION("the box's centre shows the box's hue") {
+    const Pixel c = atWorld(img, frame, {0, 0, 1});
+    CHECK(c.r > 2 * c.g);
+    CHECK(c.r > 2 * c.b);
+  }
+  SECTION("the top is sky and the bottom is ground (not upside down)") {
+    const Pixel sky = backgroundPixel(frame);
+    CHECK(near(at(img, 0, 0), sky));
+    CHECK(near(at(img, kWidth - 1, 0), sky));
+    CHECK(near(at(img, kWidth / 2, 0), sky));
+    for (int x : {0, kWidth / 2, kWidth - 1}) {
+      const Pixel ground = at(img, x, kHeight - 1);
+      CHECK_FALSE(near(ground, sky, 10));
+      CHECK(std::abs(ground.r - ground.b) < 8);  // grey, not sky blue
+    }
+  }
+  SECTION("the shadow on the ground is darker than lit ground on both sides") {
+    // The box centre (0,0,1) projected along the light (1, 0.3, -1) onto z = 0.
+    const Pixel shadow = atWorld(img, frame, {1, 0.3f, 0});
+    const Pixel lit_left = atWorld(img, frame, {-1.5f, 0.3f, 0});
+    const Pixel lit_right = atWorld(img, frame, {3.0f, 0.3f, 0});
+    CHECK(shadow.sum() + 60 < lit_left.sum());
+    CHECK(shadow.sum() + 60 < lit_right.sum());
+  }
+}
+
+TEST_CASE("two draws of the same frame give identical bytes", "[render]") {
+  auto renderer = Renderer::create(smallConfig());
+  renderer->addMesh(test::boxMesh({0.5f, 0.5f, 0.5f}));
+  DrawFrame frame = boxFrame();
+  frame.ground.colour_b = {0.3f, 0.3f, 0.3f};  // with the checker, which uses derivatives
+  RgbImage first, second;
+  renderer->draw(frame);
+  renderer->readBack(first);
+  renderer->draw(frame);
+  renderer->readBack(second);
+  CHECK(first.pixels == second.pixels);
+  // And a second renderer in the same process agrees too.
+  CHECK(renderOnce(smallConfig(), frame).pixels == first.pixels);
+}
+
+TEST_CASE("without MSAA the frame still renders", "[render]") {
+  RenderConfig config = smallConfig();
+  config.samples = 1;
+  const DrawFrame frame = boxFrame();
+  const RgbImage img = renderOnce(config, frame);
+  const Pixel c = atWorld(img, frame, {0, 0, 1});
+  CHECK(c.r > 2 * c.g);
+}
+
+TEST_CASE("unsupported MSAA sample counts are refused clearly", "[render]") {
+  RenderConfig config = smallConfig();
+  config.samples = 8;
+  try {
+    Renderer::create(config);
+    FAIL("samples = 8 was accepted");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::Contains("samples") && Catch::Contains("4"));
+  }
+}
+
+TEST_CASE("a missing shader folder is MissingInput naming the file", "[render]") {
+  RenderConfig config = smallConfig();
+  config.shader_dir = "/nonexistent/tumble/shaders";
+  try {
+    Renderer::create(config);
+    FAIL("a missing shader folder was accepted");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::MissingInput);
+    CHECK_THAT(e.what(), Catch::Contains("/nonexistent/tumble/shaders/lit.vert"));
+  }
+}
+
+TEST_CASE("a shader that does not compile is BadInput with the GLSL log", "[render]") {
+  const auto source = std::filesystem::path(TUMBLE_SOURCE_DIR) / "shaders";
+  const auto dir = std::filesystem::temp_directory_path() / "tumble_test_render_bad_shaders";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (const auto& entry : std::filesystem::directory_iterator(source)) {
+    std::filesystem::copy_file(entry.path(), dir / entry.path().filename());
+  }
+  std::ofstream(dir / "lit.frag", std::ios::app) << "\nthis is not glsl;\n";
+  RenderConfig config = smallConfig();
+  config.shader_dir = dir;
+  try {
+    Renderer::create(config);
+    FAIL("a broken shader was accepted");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::Contains("lit.frag") && Catch::Contains("error"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("instances of unknown meshes are refused", "[render]") {
+  auto renderer = Renderer::create(smallConfig());
+  DrawFrame frame = boxFrame();  // refers to mesh 0, but none was added
+  CHECK_THROWS_AS(renderer->draw(frame), Error);
+}
