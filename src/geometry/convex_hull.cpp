@@ -22,14 +22,15 @@ double triangleArea(const std::vector<Vector3d>& p, const std::array<int, 3>& t)
   return (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm();
 }
 
-// Groups of edge-connected triangles lying in one plane within `merge` (m). Seeds go largest
-// first, because a large triangle's normal is the most accurate estimate of the group's plane;
-// every member is tested against the seed's plane, never its neighbour's, so that a gently curved
-// surface cannot creep into one group triangle by triangle.
 struct Groups {
   std::vector<std::vector<int>> members;  // triangles of each group, seed first
   std::vector<int> group_of;              // group of each triangle
 };
+
+// Groups of edge-connected triangles lying in one plane within `merge` (m). Seeds go largest
+// first, because a large triangle's normal is the most accurate estimate of the group's plane;
+// every member is tested against the seed's plane, never its neighbour's, so that a gently curved
+// surface cannot creep into one group triangle by triangle.
 
 Groups coplanarGroups(const std::vector<Vector3d>& p, const TriangleHull& h, double merge) {
   std::vector<int> order(h.triangles.size());

@@ -1,11 +1,11 @@
 // Mesh files through assimp, one convex piece per mesh instance in the file's node tree.
 #include "geometry/mesh_import.h"
 
-#include <Eigen/Geometry>  // cross products
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <optional>
@@ -13,15 +13,15 @@
 
 #include "base/error.h"
 #include "geometry/convex_hull.h"
-#include "geometry/hull_tolerance.h"
+#include "geometry/mesh_convexity.h"
 
 namespace tumble {
 namespace {
 
 using Eigen::Vector3d;
 
-// One mesh as placed by one node: its name, its vertices in file coordinates (node transforms
-// applied, times `scale`) and its triangles.
+// One node's triangle meshes, which make one piece: its name, its vertices in file coordinates
+// (node transforms applied, times `scale`) and its triangles.
 struct MeshInstance {
   std::string name;
   std::vector<Vector3d> points;
@@ -58,10 +58,9 @@ void refuseTruncatedPly(const std::filesystem::path& file) {
                               "truncated?");
 }
 
-MeshInstance instance(const aiMesh& mesh, const aiNode& node, const aiMatrix4x4& to_file,
-                      double scale) {
-  MeshInstance out;
-  out.name = mesh.mName.length > 0 ? mesh.mName.C_Str() : node.mName.C_Str();
+// Appends one aiMesh, placed by `to_file`, to a piece's points and triangles.
+void append(const aiMesh& mesh, const aiMatrix4x4& to_file, double scale, MeshInstance& out) {
+  const int base = int(out.points.size());
   for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
     const aiVector3D p = to_file * mesh.mVertices[i];
     out.points.emplace_back(scale * double(p.x), scale * double(p.y), scale * double(p.z));
@@ -69,22 +68,28 @@ MeshInstance instance(const aiMesh& mesh, const aiNode& node, const aiMatrix4x4&
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const aiFace& face = mesh.mFaces[f];
     if (face.mNumIndices != 3) continue;  // points and lines: sorted out, but never trusted
-    out.triangles.push_back({int(face.mIndices[0]), int(face.mIndices[1]), int(face.mIndices[2])});
+    out.triangles.push_back({base + int(face.mIndices[0]), base + int(face.mIndices[1]),
+                             base + int(face.mIndices[2])});
   }
-  return out;
 }
 
-// Walks the node tree, accumulating transforms. We do this rather than asking assimp for
-// aiProcess_PreTransformVertices, because that step joins meshes that share a material: it would
-// fuse the separate convex pieces of a body into one non-convex mesh.
+// Walks the node tree, accumulating transforms; each node with triangles is one piece. A node,
+// not an aiMesh, because assimp splits one object into an aiMesh per material (OBJ `usemtl`,
+// glTF primitives): a box with a differently coloured lid is still one convex piece. And a walk
+// of our own rather than aiProcess_PreTransformVertices, because that step joins meshes that
+// share a material: it would fuse the separate pieces of a body into one non-convex mesh.
 void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, double scale,
              std::vector<MeshInstance>& out) {
   const aiMatrix4x4 to_file = parent * node.mTransformation;
+  MeshInstance piece;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
     if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    out.push_back(instance(mesh, node, to_file, scale));
+    if (piece.name.empty()) piece.name = node.mNumMeshes == 1 ? mesh.mName.C_Str() : "";
+    append(mesh, to_file, scale, piece);
   }
+  if (piece.name.empty()) piece.name = node.mName.C_Str();
+  if (!piece.points.empty()) out.push_back(std::move(piece));
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
     collect(scene, *node.mChildren[c], to_file, scale, out);
   }
@@ -108,27 +113,6 @@ std::vector<MeshInstance> readMeshes(const std::filesystem::path& file, double s
   std::vector<MeshInstance> meshes;
   collect(*scene, *scene->mRootNode, aiMatrix4x4(), scale, meshes);
   return meshes;
-}
-
-// A mesh is convex when each of its triangles lies in a face of its hull: a dent puts a triangle
-// (or a vertex) inside the hull, off every face plane. Degenerate triangles carry no surface and
-// are skipped. Winding is ignored, since the hull replaces the mesh's own faces anyway.
-bool isConvex(const MeshInstance& mesh, const ConvexPiece& hull) {
-  const double tol = hullTolerance(hull.vertices).contain;
-  for (const std::array<int, 3>& t : mesh.triangles) {
-    const Vector3d& a = mesh.points[t[0]];
-    const Vector3d n = (mesh.points[t[1]] - a).cross(mesh.points[t[2]] - a);
-    if (n.norm() == 0) continue;
-    bool on_a_face = false;
-    for (size_t f = 0; f < hull.faces.size() && !on_a_face; ++f) {
-      const Vector3d& normal = hull.face_normals[f];
-      const Vector3d& origin = hull.vertices[hull.faces[f][0]];
-      on_a_face = true;
-      for (int v : t) on_a_face = on_a_face && std::abs(normal.dot(mesh.points[v] - origin)) <= tol;
-    }
-    if (!on_a_face) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -163,7 +147,7 @@ ImportedPieces importConvexPieces(const std::filesystem::path& file, double scal
                                           " spans no volume (all points coplanar); a convex "
                                           "piece needs volume");
     }
-    if (!isConvex(mesh, *hull)) {
+    if (!isConvexMesh(mesh.points, mesh.triangles, *hull)) {
       out.warnings.push_back("mesh '" + mesh.name + "' (" + std::to_string(k + 1) + " of " +
                              std::to_string(meshes.size()) + ") in " + name +
                              " is not convex; using its convex hull");

@@ -1,5 +1,6 @@
-// Mesh files through assimp. Each mesh in the file is one convex piece of the body ("convex
-// decomposition assumed"); a mesh that is not convex is replaced by its hull, with a warning.
+// Mesh files through assimp. Each object in the file (an assimp node with triangles: an OBJ `o`,
+// a glTF node, an STL solid; all its materials together) is one convex piece of the body ("convex
+// decomposition assumed"); one that is not convex is replaced by its hull, with a warning.
 #pragma once
 
 #include <filesystem>

@@ -95,6 +95,33 @@ TEST_CASE("glTF node transforms are applied; scale multiplies lengths", "[import
   CHECK(volume(twice.pieces[1]) == Approx(8 * 0.005).epsilon(kFloat));
 }
 
+TEST_CASE("an object with two materials is still one piece", "[import]") {
+  // assimp splits it into one aiMesh per material; the piece is the object.
+  const fs::path file = scratch("two_materials.obj", R"(o Lidded
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+v 0 0 1
+v 1 0 1
+v 0 1 1
+v 1 1 1
+usemtl body
+f 1 5 7 3
+f 2 4 8 6
+f 1 2 6 5
+f 3 7 8 4
+f 1 3 4 2
+usemtl lid
+f 5 6 8 7
+)");
+  const ImportedPieces in = importConvexPieces(file);
+  REQUIRE(in.pieces.size() == 1);
+  CHECK(in.warnings.empty());
+  CHECK(in.pieces[0].name == "Lidded");
+  CHECK(volume(in.pieces[0]) == Approx(1.0).epsilon(kFloat));
+}
+
 TEST_CASE("a non-convex mesh is hulled, with a warning", "[import]") {
   // An L-shaped prism 0.2 m deep: squares (0,0)-(2,1) and (0,1)-(1,2) in xz, in decimetres.
   const fs::path file = scratch("l_shape.obj", R"(o Ell
