@@ -17,7 +17,6 @@ uniform vec3 u_eye;                     // camera position, world
 uniform sampler2DShadow u_shadow_map;   // for light 0
 uniform mat4 u_light_view_proj;
 uniform float u_shadow_texel_m;         // one shadow texel in metres
-uniform float u_shadow_texel_uv;        // one shadow texel in texture coordinates
 
 // Fraction of light 0 that reaches p (1 = fully lit).
 float shadowVisibility(vec3 p, vec3 n) {

@@ -50,7 +50,6 @@ FrameLighting frameLighting(const DrawFrame& frame, const std::optional<Bounding
     add(light);
     lit.shadows = true;
     lit.shadow = fitShadow(light.direction, *bound, shadow_map_size);
-    lit.shadow_texel_uv = 1.0f / static_cast<float>(shadow_map_size);
   }
   for (std::size_t i = 0; i < frame.lights.size(); ++i) {
     if (static_cast<int>(i) != shadow_light) add(frame.lights[i]);
@@ -78,7 +77,6 @@ void applyLighting(const GlProgram& program, const DrawFrame& frame, const Frame
     glUniformMatrix4fv(program.uniform("u_light_view_proj"), 1, GL_FALSE,
                        lit.shadow.view_projection.data());
     glUniform1f(program.uniform("u_shadow_texel_m"), lit.shadow.texel_m);
-    glUniform1f(program.uniform("u_shadow_texel_uv"), lit.shadow_texel_uv);
   }
 }
 

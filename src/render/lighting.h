@@ -21,7 +21,6 @@ struct FrameLighting {
   std::vector<Eigen::Vector3f> rgb;       // colour * intensity, linear
   bool shadows = false;                   // light 0 casts shadows this frame
   ShadowFit shadow;                       // valid when shadows
-  float shadow_texel_uv = 0;
   float fade_start_m = 1e30f, fade_end_m = 2e30f;  // no fade without a ground
 
   LightingVariant variant() const { return {static_cast<int>(to_light.size()), shadows}; }

@@ -35,9 +35,6 @@ class GlRenderer final : public Renderer {
   void drawShadowPass(const FrameLighting& lit);
   void drawGround(const DrawFrame& frame, const FrameLighting& lit,
                   const Eigen::Matrix4f& view_proj);
-  void drawGroundRect(const DrawFrame& frame, const FrameLighting& lit,
-                      const LightingVariant& variant, const Eigen::AlignedBox2f& rect,
-                      const Eigen::Matrix4f& view_proj);
   void drawBodies(const DrawFrame& frame, const FrameLighting& lit,
                   const Eigen::Matrix4f& view_proj);
   void drawBatches() const;
@@ -83,8 +80,8 @@ GlRenderer::~GlRenderer() {
 }
 
 void GlRenderer::createGround() {
-  // Two counter-clockwise triangles seen from above (+z), over the unit square.
-  const float corners[] = {0, 0, 1, 0, 1, 1, 0, 0, 1, 1, 0, 1};
+  // Two counter-clockwise triangles seen from above (+z), over [-1, 1]^2.
+  const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
   glGenVertexArrays(1, &ground_vao_);
   glGenBuffers(1, &ground_vbo_);
   glBindVertexArray(ground_vao_);
@@ -150,37 +147,14 @@ void GlRenderer::drawShadowPass(const FrameLighting& lit) {
 void GlRenderer::drawGround(const DrawFrame& frame, const FrameLighting& lit,
                            const Eigen::Matrix4f& view_proj) {
   glDisable(GL_CULL_FACE);  // seen from below it should still hide what is under it
-  const DrawGround& g = frame.ground;
-  const Eigen::AlignedBox2f whole(Eigen::Vector2f::Constant(-g.extent_m),
-                                  Eigen::Vector2f::Constant(g.extent_m));
-  // Shadow lookups are the ground's largest cost and llvmpipe pays for them on every pixel of a
-  // draw, so only the rectangle where shadows can fall is drawn with them. The whole ground then
-  // goes on top without shadows, pushed back in depth by a pixel's slope so it loses the depth
-  // test inside that rectangle (a same-plane tie would speckle) and wins everywhere else. No body
-  // can be hidden by the push: every body lies inside the shadow box, so its contacts with the
-  // ground lie inside the rectangle.
-  std::optional<Eigen::AlignedBox2f> shadowed;
-  if (lit.shadows) shadowed = shadowFootprint(lit.shadow, g.height);
-  if (shadowed) shadowed = shadowed->intersection(whole);
-  if (shadowed && !shadowed->isEmpty()) {
-    drawGroundRect(frame, lit, lit.variant(), *shadowed, view_proj);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 8.0f);
-  }
-  drawGroundRect(frame, lit, {lit.variant().lights, false}, whole, view_proj);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-}
-
-void GlRenderer::drawGroundRect(const DrawFrame& frame, const FrameLighting& lit,
-                                const LightingVariant& variant, const Eigen::AlignedBox2f& rect,
-                                const Eigen::Matrix4f& view_proj) {
-  const GlProgram& p = programs_->ground(variant);
+  // One shadow lookup per pixel is cheap enough to spend on the whole ground; drawing only the
+  // shadows' reach with them and the rest without was measured no faster.
+  const GlProgram& p = programs_->ground(lit.variant());
   p.use();
   applyLighting(p, frame, lit);
   const DrawGround& g = frame.ground;
   glUniformMatrix4fv(p.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
-  glUniform4f(p.uniform("u_ground_rect"), rect.min().x(), rect.min().y(), rect.max().x(),
-              rect.max().y());
+  glUniform1f(p.uniform("u_ground_extent"), g.extent_m);
   glUniform1f(p.uniform("u_ground_height"), g.height);
   glUniform3fv(p.uniform("u_colour_a"), 1, g.colour_a.data());
   glUniform3fv(p.uniform("u_colour_b"), 1, g.colour_b.data());

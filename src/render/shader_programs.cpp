@@ -19,7 +19,6 @@ ShaderPrograms::ShaderPrograms(std::filesystem::path dir) : dir_(std::move(dir))
   // One light with shadows is the usual scene; building it now also validates the files.
   lit(LightingVariant{});
   ground(LightingVariant{});
-  ground(LightingVariant{1, false});  // the ground outside the shadows' reach
   shadow_ = std::make_unique<GlProgram>(dir_, ShaderStageFiles{"shadow.vert", {}},
                                         ShaderStageFiles{"shadow.frag", {}});
 }

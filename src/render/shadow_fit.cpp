@@ -70,27 +70,7 @@ ShadowFit fitShadow(const Eigen::Vector3f& direction, const BoundingSphere& boun
   fit.view_projection = ortho(cx - half, cx + half, cy - half, cy + half,
                               depth - half - pad, depth + half + pad) * view;
   fit.texel_m = texel;
-  fit.direction = direction.normalized();
-  fit.light_rotation = view.block<3, 3>(0, 0);
-  fit.box = Eigen::AlignedBox2f(Eigen::Vector2f(cx - half, cy - half),
-                                Eigen::Vector2f(cx + half, cy + half));
   return fit;
-}
-
-std::optional<Eigen::AlignedBox2f> shadowFootprint(const ShadowFit& fit, float height) {
-  // A light this close to horizontal casts shadows thousands of times longer than the bodies are
-  // high, onto ground it barely lights (n.l < 1e-4): treat it as casting none there.
-  const Eigen::Vector3f& d = fit.direction;
-  if (d.z() > -1e-4f) return std::nullopt;
-  Eigen::AlignedBox2f footprint;
-  for (int corner = 0; corner < 4; ++corner) {
-    const Eigen::Vector2f c = fit.box.corner(static_cast<Eigen::AlignedBox2f::CornerType>(corner));
-    // The corner's line along the light, from the light frame's origin plane to z = height.
-    const Eigen::Vector3f start = fit.light_rotation.transpose() * Eigen::Vector3f(c.x(), c.y(), 0);
-    const Eigen::Vector3f hit = start + d * ((height - start.z()) / d.z());
-    footprint.extend(hit.head<2>());
-  }
-  return footprint;
 }
 
 }  // namespace tumble::render

@@ -118,6 +118,30 @@ TEST_CASE("a box above the ground lands where the camera says, with its shadow",
   }
 }
 
+TEST_CASE("a body shadows the body below it", "[render]") {
+  auto renderer = Renderer::create(smallConfig());
+  renderer->addMesh(test::boxMesh({0.5f, 0.5f, 0.5f}));
+  DrawFrame frame = boxFrame();
+  frame.camera.eye = {0, -4, 5};
+  frame.lights[0].direction = {0.05f, 0.05f, -1};  // nearly straight down
+  frame.instances[0].model.translation() = Eigen::Vector3f(0, 0, 0.5f);
+  RgbImage alone, covered;
+  renderer->draw(frame);
+  renderer->readBack(alone);
+  DrawInstance above = frame.instances[0];
+  above.model.translation() = Eigen::Vector3f(0, 0, 2.5f);
+  above.colour = {0.05f, 0.05f, 0.8f};
+  frame.instances.push_back(above);
+  renderer->draw(frame);
+  renderer->readBack(covered);
+  // A point on the lower box's top face, seen below the upper box from this camera.
+  const Eigen::Vector3f top_face(0, -0.4f, 1.0f);
+  const Pixel lit = atWorld(alone, frame, top_face);
+  const Pixel shaded = atWorld(covered, frame, top_face);
+  CHECK(shaded.r > 2 * shaded.b);  // still the red box, not the blue one in front
+  CHECK(shaded.sum() + 60 < lit.sum());
+}
+
 TEST_CASE("two draws of the same frame give identical bytes", "[render]") {
   auto renderer = Renderer::create(smallConfig());
   renderer->addMesh(test::boxMesh({0.5f, 0.5f, 0.5f}));
