@@ -1,0 +1,133 @@
+// Contact points from the chosen feature pair: clipping for faces, closest points for edges.
+#include <algorithm>
+#include <cassert>
+
+#include "collision/narrow_internal.h"
+
+namespace tumble::narrow {
+
+namespace {
+
+// The face of `piece` whose normal is most anti-parallel to n: the face that meets n's face.
+int incidentFace(const HullView& piece, const Eigen::Vector3d& n) {
+  int best = 0;
+  double lowest = INFINITY;
+  for (int f = 0; f < piece.faceCount(); ++f) {
+    const double d = piece.normals[f].dot(n);
+    if (d < lowest) lowest = d, best = f;
+  }
+  return best;
+}
+
+// One Sutherland-Hodgman pass: keeps the part of `in` with side . p <= offset + tol. A point
+// within tol of the plane counts as on it, so a flush stack's corners are not split in two by
+// rounding. Cuts are made only where the edge crosses strictly, so no duplicate points appear.
+void clipAgainst(const std::vector<ClipVertex>& in, const Eigen::Vector3d& side, double offset,
+                 double tol, std::uint32_t plane_id, std::vector<ClipVertex>& out) {
+  out.clear();
+  if (in.empty()) return;
+  const ClipVertex* prev = &in.back();
+  double d_prev = side.dot(prev->p) - offset;
+  for (const ClipVertex& cur : in) {
+    const double d_cur = side.dot(cur.p) - offset;
+    const bool crosses = (d_prev < -tol && d_cur > tol) || (d_prev > tol && d_cur < -tol);
+    if (crosses) {
+      const double t = d_prev / (d_prev - d_cur);
+      out.push_back({prev->p + t * (cur.p - prev->p),
+                     mixFeature(mixFeature(plane_id, prev->id), cur.id)});
+    }
+    if (d_cur <= tol) out.push_back(cur);
+    prev = &cur;
+    d_prev = d_cur;
+  }
+}
+
+// Clips the incident polygon against each side plane of the reference face (its edge x normal,
+// outward for a counter-clockwise face) and leaves the result in s.poly.
+void clipToReference(const HullView& ref, int ref_face, Scratch& s) {
+  const std::vector<int>& face = ref.hull->piece->faces[ref_face];
+  const Eigen::Vector3d n = ref.normals[ref_face];
+  for (size_t k = 0; k < face.size() && !s.poly.empty(); ++k) {
+    const Eigen::Vector3d v0 = ref.vertices[face[k]];
+    const Eigen::Vector3d edge = ref.vertices[face[(k + 1) % face.size()]] - v0;
+    const Eigen::Vector3d side = edge.cross(n);
+    // 1e-9 of the piece's size: far below any physical feature, far above rounding (1e-16).
+    const double tol = 1e-9 * ref.hull->size * edge.norm();
+    clipAgainst(s.poly, side, side.dot(v0), tol, 0x5100u + std::uint32_t(k), s.poly_next);
+    std::swap(s.poly, s.poly_next);
+  }
+}
+
+// When clipping leaves nothing (the incident face's region misses the reference face, which can
+// happen when several incident faces are near ties), the deepest vertex still makes a contact.
+void deepestVertexFallback(const HullView& inc, const Eigen::Vector3d& n, Scratch& s) {
+  int best = 0;
+  for (int v = 1; v < inc.vertexCount(); ++v) {
+    if (n.dot(inc.vertices[v]) < n.dot(inc.vertices[best])) best = v;
+  }
+  s.poly.push_back({inc.vertices[best], 0x7e000000u + std::uint32_t(best)});
+}
+
+}  // namespace
+
+bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool ref_is_a,
+                 double margin, ContactManifold& out) {
+  Scratch& s = scratch();
+  const Eigen::Vector3d n = ref.normals[ref_face];
+  const int inc_face = incidentFace(inc, n);
+  s.poly.clear();
+  for (int v : inc.hull->piece->faces[inc_face]) s.poly.push_back({inc.vertices[v], std::uint32_t(v)});
+  clipToReference(ref, ref_face, s);
+  if (s.poly.empty()) deepestVertexFallback(inc, n, s);
+
+  out.normal = ref_is_a ? n : Eigen::Vector3d(-n);
+  out.points.clear();
+  const std::uint32_t base = mixFeature(mixFeature(ref_is_a ? 1u : 2u, std::uint32_t(ref_face)),
+                                        std::uint32_t(inc_face));
+  for (const ClipVertex& cv : s.poly) {
+    const double dist = n.dot(cv.p) - ref.offsets[ref_face];  // incident point above the plane
+    if (dist > margin) continue;
+    out.points.push_back({cv.p - 0.5 * dist * n, -dist, mixFeature(base, cv.id)});
+  }
+  return !out.points.empty();
+}
+
+namespace {
+
+// Parameters (s, t) in [0,1]^2 of the closest points of segments p + s d and q + t e (Ericson,
+// Real-Time Collision Detection 5.1.9). Callers pass non-parallel edges, but a zero denominator
+// is still guarded so that no NaN can leave this function.
+void closestOnSegments(const Eigen::Vector3d& p, const Eigen::Vector3d& d, const Eigen::Vector3d& q,
+                       const Eigen::Vector3d& e, double& s, double& t) {
+  const Eigen::Vector3d r = p - q;
+  const double a = d.dot(d), b = d.dot(e), c = d.dot(r), ee = e.dot(e), f = e.dot(r);
+  const double denom = a * ee - b * b;
+  s = denom > 0 ? std::clamp((b * f - c * ee) / denom, 0.0, 1.0) : 0.0;
+  t = ee > 0 ? (b * s + f) / ee : 0.0;
+  if (t < 0 || t > 1) {
+    t = std::clamp(t, 0.0, 1.0);
+    s = a > 0 ? std::clamp((b * t - c) / a, 0.0, 1.0) : 0.0;
+  }
+}
+
+}  // namespace
+
+bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double margin,
+                 ContactManifold& out) {
+  Eigen::Vector3d axis;
+  double sep = 0;
+  if (!edgeAxis(a, ea, b, eb, axis, sep) || sep > margin) return false;
+  const auto& [a0, a1] = a.hull->piece->edges[ea];
+  const auto& [b0, b1] = b.hull->piece->edges[eb];
+  const Eigen::Vector3d p = a.vertices[a0], d = a.vertices[a1] - p;
+  const Eigen::Vector3d q = b.vertices[b0], e = b.vertices[b1] - q;
+  double s = 0, t = 0;
+  closestOnSegments(p, d, q, e, s, t);
+  out.normal = axis;
+  out.points.clear();
+  out.points.push_back({0.5 * ((p + s * d) + (q + t * e)), -sep,
+                        mixFeature(mixFeature(3u, std::uint32_t(ea)), std::uint32_t(eb))});
+  return true;
+}
+
+}  // namespace tumble::narrow

@@ -1,0 +1,92 @@
+// Internal to the narrow phase (not for other layers): both pieces expressed in one working frame,
+// the scratch buffers reused across calls, the feature ids and the tolerances.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "collision/collision_hull.h"
+#include "collision/contact_manifold.h"
+
+namespace tumble::narrow {
+
+// Tolerances. Sizes are the smaller hull's extent, so they scale with the scene's units.
+//
+// Edge pairs whose directions make a sine below this are treated as parallel and skipped: the
+// normalised cross product has direction error ~ 1e-16 / sine, and for parallel edges the face
+// axes beside them already give the pair's separation (skipping only lowers the SAT value, so it
+// stays a lower bound on the distance).
+constexpr double kParallelSine = 1e-6;
+// Feature choice (Gregorius, "Robust contact creation for physics simulations", GDC 2015): an edge
+// axis must beat the best face by 10 % of its value plus kAbsTolerance * size, and B's face must
+// beat A's by 2 % plus the same, so near ties always resolve to A's face: a box resting flat stays
+// face-face whatever rounding does to edge axes that coincide with the face normal.
+constexpr double kEdgeRelTolerance = 0.10;
+constexpr double kFaceRelTolerance = 0.02;
+constexpr double kAbsTolerance = 1e-3;
+
+// One piece as seen in the working frame (the frame of the piece with more vertices; the other is
+// transformed into it, so only the smaller one pays for the transform).
+struct HullView {
+  const CollisionHull* hull = nullptr;
+  const Eigen::Vector3d* vertices = nullptr;
+  const Eigen::Vector3d* normals = nullptr;
+  const double* offsets = nullptr;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  int vertexCount() const { return int(hull->piece->vertices.size()); }
+  int faceCount() const { return int(hull->piece->faces.size()); }
+  int edgeCount() const { return int(hull->piece->edges.size()); }
+};
+
+struct ClipVertex {
+  Eigen::Vector3d p;
+  std::uint32_t id;  // where it came from: a vertex, or an edge cut by a side plane
+};
+
+// One edge's arc on the Gauss map: its two face normals (negated for B, whose Gauss map enters
+// the Minkowski difference A - B reversed) and their cross product.
+struct EdgeArc {
+  Eigen::Vector3d n0, n1, n1xn0;
+};
+
+// Reused by every call on this thread: after the first few calls the hot path allocates nothing.
+struct Scratch {
+  std::vector<Eigen::Vector3d> vertices, normals;  // the transformed piece
+  std::vector<double> offsets;
+  std::vector<ClipVertex> poly, poly_next;         // Sutherland-Hodgman ping-pong
+  std::vector<EdgeArc> arcs_a, arcs_b;             // edge query
+};
+Scratch& scratch();
+
+// Order-dependent mix of small integers into a 32-bit feature id (boost::hash_combine's scheme).
+inline std::uint32_t mixFeature(std::uint32_t h, std::uint32_t x) {
+  return h ^ (x + 0x9e3779b9u + (h << 6) + (h >> 2));
+}
+
+// sat.cpp
+struct AxisQuery {
+  double separation = -INFINITY;  // m; -inf when no axis of this kind was valid
+  int index_a = -1, index_b = -1;
+};
+double faceSeparation(const HullView& ref, int face, const HullView& other);
+// Faces of `ref` against the vertices of `other`; returns at once when one exceeds stop_above.
+AxisQuery queryFaces(const HullView& ref, const HullView& other, double stop_above);
+// false when the pair is not a face of the Minkowski difference or the edges are parallel.
+bool edgeAxis(const HullView& a, int ea, const HullView& b, int eb, Eigen::Vector3d& axis,
+              double& separation);
+AxisQuery queryEdges(const HullView& a, const HullView& b, double stop_above);
+
+// clip.cpp: contacts in the working frame; the normal of `out` is set from A to B.
+bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool ref_is_a,
+                 double margin, ContactManifold& out);
+bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double margin,
+                 ContactManifold& out);
+
+// manifold_reduce.cpp: keeps at most 4 points (deepest, farthest from it, then the two that
+// enlarge the support polygon most), in that order; deterministic.
+void reduceManifold(std::vector<ContactPoint>& points, const Eigen::Vector3d& normal);
+
+}  // namespace tumble::narrow

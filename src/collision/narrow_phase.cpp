@@ -1,0 +1,211 @@
+// The narrow phase for one pair of convex pieces: working frame, cached axis, full SAT, feature
+// choice, manifold, reduction, back to world.
+#include "collision/narrow_phase.h"
+
+#include <algorithm>
+#include <cassert>
+
+#include "collision/narrow_internal.h"
+
+namespace tumble {
+
+namespace narrow {
+
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
+}  // namespace narrow
+
+namespace {
+
+using narrow::AxisQuery;
+using narrow::HullView;
+using Axis = SatCache::Axis;
+
+// A and B in the working frame, and the pose that takes the working frame to world.
+struct PairView {
+  HullView a, b;
+  const Eigen::Isometry3d* to_world = nullptr;
+};
+
+HullView nativeView(const CollisionHull& h) {
+  return {&h, h.piece->vertices.data(), h.piece->face_normals.data(), h.face_offsets.data(),
+          h.centroid};
+}
+
+// Moves hull h by `rel` into the scratch buffers: vertices, normals, and plane offsets
+// (n' . x' = n . x + n' . t for x' = R x + t).
+HullView transformedView(const CollisionHull& h, const Eigen::Isometry3d& rel, narrow::Scratch& s) {
+  const ConvexPiece& piece = *h.piece;
+  const Eigen::Matrix3d R = rel.linear();
+  const Eigen::Vector3d t = rel.translation();
+  s.vertices.resize(piece.vertices.size());
+  for (size_t i = 0; i < piece.vertices.size(); ++i) s.vertices[i] = R * piece.vertices[i] + t;
+  s.normals.resize(piece.face_normals.size());
+  s.offsets.resize(piece.face_normals.size());
+  for (size_t f = 0; f < piece.face_normals.size(); ++f) {
+    s.normals[f] = R * piece.face_normals[f];
+    s.offsets[f] = h.face_offsets[f] + s.normals[f].dot(t);
+  }
+  return {&h, s.vertices.data(), s.normals.data(), s.offsets.data(), R * h.centroid + t};
+}
+
+// Works in the frame of the piece with more vertices, so only the smaller one is transformed.
+PairView makePairView(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
+                      const CollisionHull& b, const Eigen::Isometry3d& pose_b) {
+  narrow::Scratch& s = narrow::scratch();
+  if (a.piece->vertices.size() >= b.piece->vertices.size()) {
+    const Eigen::Isometry3d rel = pose_a.inverse(Eigen::Isometry) * pose_b;
+    return {nativeView(a), transformedView(b, rel, s), &pose_a};
+  }
+  const Eigen::Isometry3d rel = pose_b.inverse(Eigen::Isometry) * pose_a;
+  return {transformedView(a, rel, s), nativeView(b), &pose_b};
+}
+
+double cachedSeparation(const PairView& p, const SatCache& c) {
+  Eigen::Vector3d axis;
+  double s = -INFINITY;
+  switch (c.axis) {
+    case Axis::None: break;
+    case Axis::FaceA: s = narrow::faceSeparation(p.a, c.index_a, p.b); break;
+    case Axis::FaceB: s = narrow::faceSeparation(p.b, c.index_b, p.a); break;
+    case Axis::Edges:
+      if (!narrow::edgeAxis(p.a, c.index_a, p.b, c.index_b, axis, s)) s = -INFINITY;
+      break;
+  }
+  return s;
+}
+
+struct SatResult {
+  AxisQuery face_a, face_b, edges;
+  bool separated = false;
+};
+
+// Every axis, stopping at the first that separates by more than stop_above (which it caches).
+SatResult fullSat(const PairView& p, double stop_above, SatCache& cache) {
+  SatResult r;
+  r.face_a = narrow::queryFaces(p.a, p.b, stop_above);
+  if (r.face_a.separation > stop_above) {
+    cache = {Axis::FaceA, r.face_a.index_a, -1, cache.last_use, cache.early_exits};
+    return r.separated = true, r;
+  }
+  r.face_b = narrow::queryFaces(p.b, p.a, stop_above);
+  if (r.face_b.separation > stop_above) {
+    cache = {Axis::FaceB, -1, r.face_b.index_b, cache.last_use, cache.early_exits};
+    return r.separated = true, r;
+  }
+  r.edges = narrow::queryEdges(p.a, p.b, stop_above);
+  if (r.edges.separation > stop_above) {
+    cache = {Axis::Edges, r.edges.index_a, r.edges.index_b, cache.last_use, cache.early_exits};
+    r.separated = true;
+  }
+  return r;
+}
+
+struct Choice {
+  Axis axis;
+  int index_a, index_b;
+};
+
+// The feature that makes the manifold (tolerances and their reasons in narrow_internal.h).
+// A cached face within the face tolerance of the winner keeps its role: near ties between two
+// faces (a box rocking on its face) then do not swap the reference face every step.
+Choice chooseFeature(const SatResult& r, const PairView& p, double cached_sep, SatCache& cache) {
+  const double abs_tol = narrow::kAbsTolerance * std::min(p.a.hull->size, p.b.hull->size);
+  const double best_face = std::max(r.face_a.separation, r.face_b.separation);
+  if (r.edges.separation > best_face + narrow::kEdgeRelTolerance * std::abs(best_face) + abs_tol) {
+    return {Axis::Edges, r.edges.index_a, r.edges.index_b};
+  }
+  const double sa = r.face_a.separation;
+  Choice c{Axis::FaceA, r.face_a.index_a, -1};
+  double chosen = sa;
+  if (r.face_b.separation > sa + narrow::kFaceRelTolerance * std::abs(sa) + abs_tol) {
+    c = {Axis::FaceB, -1, r.face_b.index_b};
+    chosen = r.face_b.separation;
+  }
+  const bool cached_face = cache.axis == Axis::FaceA || cache.axis == Axis::FaceB;
+  const double keep_tol = narrow::kFaceRelTolerance * std::abs(chosen) + abs_tol;
+  if (cached_face && cached_sep >= chosen - keep_tol) c = {cache.axis, cache.index_a, cache.index_b};
+  return c;
+}
+
+bool buildManifold(const PairView& p, const Choice& c, double margin, ContactManifold& out) {
+  switch (c.axis) {
+    case Axis::FaceA: return narrow::faceContact(p.a, c.index_a, p.b, true, margin, out);
+    case Axis::FaceB: return narrow::faceContact(p.b, c.index_b, p.a, false, margin, out);
+    case Axis::Edges: return narrow::edgeContact(p.a, c.index_a, p.b, c.index_b, margin, out);
+    case Axis::None: break;
+  }
+  return false;
+}
+
+void toWorld(const Eigen::Isometry3d& pose, ContactManifold& m) {
+  m.normal = (pose.linear() * m.normal).normalized();
+  for (ContactPoint& cp : m.points) cp.position = pose * cp.position;
+}
+
+}  // namespace
+
+bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+             const Eigen::Isometry3d& pose_b, double margin_m, SatCache& cache,
+             ContactManifold& out) {
+  out.points.clear();
+  const PairView p = makePairView(a, pose_a, b, pose_b);
+  // the seed's "defining face/edge": while it still separates, nothing else need be tested
+  const double cached_sep = cachedSeparation(p, cache);
+  if (cached_sep > margin_m) {
+    cache.last_use = SatCache::Use::EarlyExit;
+    ++cache.early_exits;
+    return false;
+  }
+  const SatResult r = fullSat(p, margin_m, cache);
+  cache.last_use = SatCache::Use::Miss;
+  if (r.separated) return false;
+  const Choice c = chooseFeature(r, p, cached_sep, cache);
+  if (c.axis == cache.axis && c.index_a == cache.index_a && c.index_b == cache.index_b) {
+    cache.last_use = SatCache::Use::Reused;
+  }
+  cache.axis = c.axis;
+  cache.index_a = c.index_a;
+  cache.index_b = c.index_b;
+  if (!buildManifold(p, c, margin_m, out)) return false;
+  narrow::reduceManifold(out.points, out.normal);
+  toWorld(*p.to_world, out);
+  return true;
+}
+
+std::optional<ContactManifold> collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
+                                       const CollisionHull& b, const Eigen::Isometry3d& pose_b,
+                                       double margin_m, SatCache& cache) {
+  ContactManifold m;
+  if (!collide(a, pose_a, b, pose_b, margin_m, cache, m)) return std::nullopt;
+  return m;
+}
+
+std::optional<ContactManifold> collide(const ConvexPiece& a, const Eigen::Isometry3d& pose_a,
+                                       const ConvexPiece& b, const Eigen::Isometry3d& pose_b,
+                                       double margin_m, SatCache& cache) {
+  return collide(makeCollisionHull(a), pose_a, makeCollisionHull(b), pose_b, margin_m, cache);
+}
+
+double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                  const Eigen::Isometry3d& pose_b, SatCache& cache) {
+  // every axis, even when the cached one separates: the largest value is the tightest lower bound
+  // on the distance, which lets conservative advancement take the longest safe step
+  const PairView p = makePairView(a, pose_a, b, pose_b);
+  const SatResult r = fullSat(p, INFINITY, cache);
+  const double s = std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
+  cache.index_a = cache.index_b = -1;
+  if (s == r.face_a.separation) {
+    cache.axis = Axis::FaceA, cache.index_a = r.face_a.index_a;
+  } else if (s == r.face_b.separation) {
+    cache.axis = Axis::FaceB, cache.index_b = r.face_b.index_b;
+  } else {
+    cache.axis = Axis::Edges, cache.index_a = r.edges.index_a, cache.index_b = r.edges.index_b;
+  }
+  return s;
+}
+
+}  // namespace tumble

@@ -1,0 +1,73 @@
+// Narrow phase: contact manifolds between pairs of convex pieces by the separating-axis test
+// (DESIGN.md, contact pipeline step 2; seed 000 "separating plane", "defining face/edge").
+//
+// Conventions:
+//   normal   unit, world, pointing from A to B (B is pushed along +normal).
+//   depth    > 0 penetrating, < 0 separated; pairs separated by more than `margin` give no contact.
+//   position midway between the two surfaces.
+//   ground   the half-space z <= height is always B, the piece A: normal = (0, 0, -1).
+// The manifold is built by clipping the incident face against the reference face (face contacts)
+// or is the single closest point of two edges (edge contacts), then reduced to <= 4 points.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+
+#include "collision/collision_hull.h"
+#include "collision/contact_manifold.h"
+#include "geometry/convex_piece.h"
+
+namespace tumble {
+
+// Per piece pair, kept between steps: the last separating (or least penetrating) axis — the
+// seed's "defining face/edge" — is tried first, and while it still separates the pair the test
+// stops there. For touching pairs it keeps the reference face from flickering between near ties.
+struct SatCache {
+  enum class Axis : std::uint8_t { None, FaceA, FaceB, Edges };
+  Axis axis = Axis::None;
+  int index_a = -1;  // face of A (FaceA) or edge of A (Edges)
+  int index_b = -1;  // face of B (FaceB) or edge of B (Edges)
+  // What the last call did with the cached axis (for tests and --stats).
+  //   EarlyExit: the cached axis still separates by more than the margin; nothing else was tested.
+  //   Reused:    all axes were tested and the contact was built on the cached feature again.
+  //   Miss:      anything else.
+  enum class Use : std::uint8_t { Miss, EarlyExit, Reused };
+  Use last_use = Use::Miss;
+  std::uint32_t early_exits = 0;  // calls that the cached axis alone settled
+};
+
+// Contacts between A and B, or nothing when they are separated by more than margin_m (m).
+// Writes into `out` (its point buffer is reused) and returns false when there is no contact.
+bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+             const Eigen::Isometry3d& pose_b, double margin_m, SatCache& cache,
+             ContactManifold& out);
+std::optional<ContactManifold> collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
+                                       const CollisionHull& b, const Eigen::Isometry3d& pose_b,
+                                       double margin_m, SatCache& cache);
+// Convenience for tools and tests: derives the hulls on every call (slower).
+std::optional<ContactManifold> collide(const ConvexPiece& a, const Eigen::Isometry3d& pose_a,
+                                       const ConvexPiece& b, const Eigen::Isometry3d& pose_b,
+                                       double margin_m, SatCache& cache);
+
+// The SAT value (m): the largest separation along the tested axes (face normals of both, and the
+// edge x edge axes that are faces of the Minkowski difference). > 0 separated.
+// Each axis's projection gap is at most the true distance, so when separated this is a lower
+// bound on the distance (equal to it for face-vertex and edge-edge closest features): safe for
+// conservative advancement. When overlapping it is minus the penetration depth.
+double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                  const Eigen::Isometry3d& pose_b, SatCache& cache);
+
+// The static ground z <= height_m (world z up). The piece is A, the ground B, so the normal is
+// (0, 0, -1); every vertex below height_m + margin_m is a contact with depth = height_m - z,
+// placed midway (z + height_m) / 2; then reduced to <= 4 points keeping the support polygon.
+bool collideGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double height_m,
+                   double margin_m, ContactManifold& out);
+std::optional<ContactManifold> collideGround(const ConvexPiece& piece,
+                                             const Eigen::Isometry3d& pose, double height_m,
+                                             double margin_m);
+// min vertex z - height_m (m): the exact distance to the ground when positive.
+double groundSeparation(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double height_m);
+
+}  // namespace tumble

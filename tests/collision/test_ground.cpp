@@ -1,0 +1,95 @@
+#include <catch2/catch.hpp>
+
+#include "collision/narrow_phase.h"
+#include "collision_checks.h"
+#include "geometry/primitives.h"
+
+using namespace tumble;
+using Eigen::Vector3d;
+using test::pose;
+using test::rotation;
+
+namespace {
+
+// Twice the area of the convex polygon through the points, taken in angular order about their mean.
+double supportArea(const ContactManifold& m) {
+  Vector3d c = Vector3d::Zero();
+  for (const ContactPoint& p : m.points) c += p.position;
+  c /= double(m.points.size());
+  std::vector<Vector3d> ring;
+  for (const ContactPoint& p : m.points) ring.push_back(p.position - c);
+  std::sort(ring.begin(), ring.end(), [](const Vector3d& a, const Vector3d& b) {
+    return std::atan2(a.y(), a.x()) < std::atan2(b.y(), b.x());
+  });
+  double area2 = 0;
+  for (size_t i = 0; i < ring.size(); ++i) area2 += ring[i].cross(ring[(i + 1) % ring.size()]).z();
+  return area2;
+}
+
+}  // namespace
+
+TEST_CASE("ground: a flat box gives its 4 bottom corners", "[ground]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.3, 0.2));
+  const auto m = collideGround(box, pose({1, 2, 0.2 + 0.1 - 0.004}), 0.1, 0.0);
+  REQUIRE(m);
+  CHECK(m->normal == Vector3d(0, 0, -1));  // from the piece (A) to the ground (B)
+  REQUIRE(m->points.size() == 4);
+  for (const ContactPoint& p : m->points) {
+    CHECK(p.depth == Approx(0.004).epsilon(1e-9));
+    CHECK(p.position.z() == Approx(0.1 - 0.002).epsilon(1e-12));
+  }
+  CHECK(supportArea(*m) == Approx(2 * 1.0 * 0.6).epsilon(1e-12));
+}
+
+TEST_CASE("ground: a tilted box touches with an edge (2 points) or a corner (1)", "[ground]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  SECTION("edge: tilted about y") {
+    const auto x = pose({0, 0, 0}, rotation(0.2, Vector3d::UnitY()));
+    const double lift = -groundSeparation(box, x, 0.0) - 1e-3;  // 1 mm into the ground
+    const auto m = collideGround(box, pose({0, 0, lift}, rotation(0.2, Vector3d::UnitY())), 0.0, 0.0);
+    REQUIRE(m);
+    CHECK(m->points.size() == 2);
+    for (const ContactPoint& p : m->points) CHECK(p.depth == Approx(1e-3).epsilon(1e-9));
+  }
+  SECTION("corner: tilted about a diagonal") {
+    const auto q = rotation(0.3, Vector3d(1, 1, 0));
+    const double lift = -groundSeparation(box, pose({0, 0, 0}, q), 0.0) - 1e-3;
+    const auto m = collideGround(box, pose({0, 0, lift}, q), 0.0, 0.0);
+    REQUIRE(m);
+    CHECK(m->points.size() == 1);
+  }
+}
+
+TEST_CASE("ground: 8 coplanar points, duplicated, reduce to the 4 corners", "[ground]") {
+  ConvexPiece piece;  // only vertices matter to the ground test
+  for (int copy = 0; copy < 2; ++copy) {
+    for (double x : {-1.0, 1.0}) {
+      for (double y : {-1.0, 1.0}) piece.vertices.emplace_back(x, y, 0.0);
+    }
+  }
+  piece.vertices.emplace_back(0, 0, 1);
+  const auto m = collideGround(piece, Eigen::Isometry3d::Identity(), 0.0, 1e-6);
+  REQUIRE(m);
+  REQUIRE(m->points.size() == 4);
+  CHECK(supportArea(*m) == Approx(2 * 4.0).epsilon(1e-12));
+}
+
+TEST_CASE("ground: an octagon reduces to 4 points keeping most of its area", "[ground]") {
+  ConvexPiece piece;
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * std::numbers::pi / 4 + 0.1;
+    piece.vertices.emplace_back(std::cos(a), std::sin(a), k % 2 ? 1e-4 : 0.0);  // slightly uneven
+  }
+  const auto m = collideGround(piece, Eigen::Isometry3d::Identity(), 1e-3, 0.0);
+  REQUIRE(m);
+  REQUIRE(m->points.size() == 4);
+  const double octagon2 = 2 * 2 * std::sqrt(2.0);  // twice the area of a unit-radius octagon
+  CHECK(supportArea(*m) >= 0.7 * octagon2);  // the inscribed square: 1/sqrt2 of it
+}
+
+TEST_CASE("groundSeparation: lowest vertex height above the plane", "[ground]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const auto q = Eigen::Quaterniond::FromTwoVectors(Vector3d(1, 1, 1), Vector3d(0, 0, 1));
+  CHECK(groundSeparation(box, pose({0, 0, 2}, q), 0.5) ==
+        Approx(2 - 0.5 * std::sqrt(3.0) - 0.5).epsilon(1e-12));
+}

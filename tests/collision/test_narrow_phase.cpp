@@ -1,0 +1,228 @@
+// Hand-worked contact cases: every expected number below follows from the box sizes and poses.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "collision/narrow_phase.h"
+#include "collision_checks.h"
+#include "geometry/primitives.h"
+
+using namespace tumble;
+using Eigen::Vector3d;
+using test::pose;
+using test::rotation;
+
+namespace {
+
+const Eigen::Isometry3d kIdentity = Eigen::Isometry3d::Identity();
+
+// True when each expected xy position matches one contact point (in any order).
+bool sameXy(const ContactManifold& m, std::vector<Eigen::Vector2d> expected, double tol) {
+  if (m.points.size() != expected.size()) return false;
+  for (const ContactPoint& p : m.points) {
+    const auto it = std::find_if(expected.begin(), expected.end(), [&](const Eigen::Vector2d& e) {
+      return (p.position.head<2>() - e).norm() < tol;
+    });
+    if (it == expected.end()) return false;
+    expected.erase(it);
+  }
+  return true;
+}
+
+void checkSane(const ContactManifold& m) {
+  REQUIRE(m.normal.allFinite());
+  CHECK(m.normal.norm() == Approx(1).epsilon(1e-12));
+  CHECK(!m.points.empty());
+  CHECK(m.points.size() <= 4);
+  for (const ContactPoint& p : m.points) {
+    CHECK(p.position.allFinite());
+    CHECK(std::isfinite(p.depth));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("face-face: box resting on a box, 4 corners, exact depth and normal", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  SatCache cache;
+  const auto m = collide(box, kIdentity, box, pose({0, 0, 0.99}), 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(m->normal == Vector3d(0, 0, 1));  // from A (below) to B (above)
+  CHECK(sameXy(*m, {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, 1e-12));
+  for (const ContactPoint& p : m->points) {
+    CHECK(p.depth == Approx(0.01).epsilon(1e-12));
+    CHECK(p.position.z() == Approx(0.495).epsilon(1e-12));  // midway between 0.49 and 0.5
+  }
+  SECTION("the same pair the other way round: the normal flips") {
+    SatCache other;
+    const auto r = collide(box, pose({0, 0, 0.99}), box, kIdentity, 0.0, other);
+    REQUIRE(r);
+    CHECK(r->normal == Vector3d(0, 0, -1));
+    CHECK(r->points.size() == 4);
+  }
+}
+
+TEST_CASE("face-face clipped: a box overhanging a bigger box", "[narrow]") {
+  const ConvexPiece big = makeBox(Vector3d(1, 1, 0.5)), small = makeBox(Vector3d(0.5, 0.5, 0.5));
+  SatCache cache;
+  // small's footprint x in [0.3, 1.3], y in [0.1, 1.1]; big's top ends at x = 1, y = 1
+  const auto m = collide(big, kIdentity, small, pose({0.8, 0.6, 0.98}), 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(m->normal.isApprox(Vector3d(0, 0, 1), 1e-15));
+  CHECK(sameXy(*m, {{0.3, 0.1}, {1, 0.1}, {1, 1}, {0.3, 1}}, 1e-12));
+  for (const ContactPoint& p : m->points) CHECK(p.depth == Approx(0.02).epsilon(1e-12));
+}
+
+TEST_CASE("edge-edge: two boxes crossed at their edges give one point", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const double r2 = std::sqrt(2.0), d = 0.01;
+  // A's top edge runs along x at z = sqrt2/2; B's bottom edge along y at z_B - sqrt2/2
+  const auto pa = pose({0, 0, 0}, rotation(std::numbers::pi / 4, Vector3d::UnitX()));
+  const auto pb = pose({0, 0, r2 - d}, rotation(std::numbers::pi / 4, Vector3d::UnitY()));
+  SatCache cache;
+  const auto m = collide(box, pa, box, pb, 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  REQUIRE(m->points.size() == 1);
+  CHECK(cache.axis == SatCache::Axis::Edges);
+  CHECK(m->normal.isApprox(Vector3d(0, 0, 1), 1e-12));  // x cross y, from A to B
+  CHECK(m->points[0].depth == Approx(d).epsilon(1e-9));
+  CHECK(m->points[0].position.isApprox(Vector3d(0, 0, r2 / 2 - d / 2), 1e-12));
+}
+
+TEST_CASE("vertex-face: a box balanced on its corner gives one point", "[narrow]") {
+  const ConvexPiece ground = makeBox(Vector3d(2, 2, 0.5)), cube = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const auto corner_down = Eigen::Quaterniond::FromTwoVectors(Vector3d(1, 1, 1), Vector3d(0, 0, 1));
+  const double d = 0.003, h = 0.5 * std::sqrt(3.0);
+  SatCache cache;
+  const auto m = collide(ground, kIdentity, cube, pose({0, 0, 0.5 + h - d}, corner_down), 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  REQUIRE(m->points.size() == 1);
+  CHECK(m->normal.isApprox(Vector3d(0, 0, 1), 1e-15));
+  CHECK(m->points[0].depth == Approx(d).epsilon(1e-9));
+  CHECK(m->points[0].position.isApprox(Vector3d(0, 0, 0.5 - d / 2), 1e-12));
+}
+
+TEST_CASE("touching and barely separated boxes against the margin", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  SatCache cache;
+  SECTION("touching: depth 0 is a contact even with margin 0") {
+    const auto m = collide(box, kIdentity, box, pose({0.2, 0.1, 1.0}), 0.0, cache);
+    REQUIRE(m);
+    CHECK(m->points.size() == 4);
+    for (const ContactPoint& p : m->points) CHECK(std::abs(p.depth) < 1e-15);
+  }
+  SECTION("separated by 1e-9: reported within a margin, with negative depth") {
+    const auto m = collide(box, kIdentity, box, pose({0, 0, 1 + 1e-9}), 1e-6, cache);
+    REQUIRE(m);
+    CHECK(m->points.size() == 4);
+    for (const ContactPoint& p : m->points) CHECK(p.depth == Approx(-1e-9).epsilon(1e-6));
+  }
+  SECTION("separated by 1e-9: nothing with margin 0") {
+    CHECK_FALSE(collide(box, kIdentity, box, pose({0, 0, 1 + 1e-9}), 0.0, cache));
+  }
+}
+
+TEST_CASE("coincident boxes: no NaN, a valid face axis", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.3, 0.2));
+  SatCache cache;
+  const auto m = collide(box, pose({1, 2, 3}), box, pose({1, 2, 3}), 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(cache.axis != SatCache::Axis::None);
+  for (const ContactPoint& p : m->points) CHECK(p.depth > 0.39);  // the thinnest axis: 2 * 0.2
+}
+
+TEST_CASE("a thin plate (1 m x 1 m x 1 mm) resting on a box", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5)), plate = makeBox(Vector3d(0.5, 0.5, 5e-4));
+  const double d = 1e-4;
+  const double turn = GENERATE(0.0, 0.5);  // 0.5 rad about z: the overlap is an octagon
+  SatCache cache;
+  const auto m = collide(box, kIdentity, plate,
+                         pose({0, 0, 0.5 + 5e-4 - d}, rotation(turn, Vector3d::UnitZ())), 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(m->normal.isApprox(Vector3d(0, 0, 1), 1e-15));
+  CHECK(m->points.size() == 4);
+  for (const ContactPoint& p : m->points) CHECK(p.depth == Approx(d).epsilon(1e-9));
+  SECTION("plate as A: the normal points down, to the box") {
+    SatCache other;
+    const auto r = collide(plate, pose({0, 0, 0.5 + 5e-4 - d}, rotation(turn, Vector3d::UnitZ())),
+                           box, kIdentity, 0.0, other);
+    REQUIRE(r);
+    CHECK(r->normal.isApprox(Vector3d(0, 0, -1), 1e-15));
+    CHECK(r->points.size() == 4);
+  }
+}
+
+TEST_CASE("nearly parallel edges (1e-9 rad): no NaN, a face contact along the ridge", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const double r2 = std::sqrt(2.0), d = 0.01;
+  const auto ridge = rotation(std::numbers::pi / 4, Vector3d::UnitX());
+  const auto pa = pose({0, 0, 0}, ridge);
+  const auto pb = pose({0, 0, r2 - d}, rotation(1e-9, Vector3d::UnitZ()) * ridge);
+  SatCache cache;
+  const auto m = collide(box, pa, box, pb, 0.0, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(cache.axis != SatCache::Axis::Edges);
+  // ridge on ridge: leaving along a face normal of A takes d / sqrt2, less than d straight up
+  CHECK(m->normal.z() == Approx(1 / r2).epsilon(1e-6));
+  for (const ContactPoint& p : m->points) {
+    CHECK(p.depth == Approx(d / r2).epsilon(1e-6));
+    CHECK(std::abs(p.position.y()) < 0.01);
+  }
+}
+
+TEST_CASE("SatCache: a separated pair exits on the cached axis", "[narrow][cache]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const CollisionHull hull = makeCollisionHull(box);
+  SatCache cache;
+  ContactManifold m;
+  CHECK_FALSE(collide(hull, kIdentity, hull, pose({1.1, 0.2, 0}), 0.01, cache, m));
+  CHECK(cache.last_use == SatCache::Use::Miss);
+  CHECK(cache.axis == SatCache::Axis::FaceA);
+  CHECK_FALSE(collide(hull, kIdentity, hull, pose({1.1, 0.2, 0}), 0.01, cache, m));
+  CHECK(cache.last_use == SatCache::Use::EarlyExit);
+  CHECK(cache.early_exits == 1);
+}
+
+TEST_CASE("SatCache: a resting pair reuses the cached face and repeats its manifold",
+          "[narrow][cache]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  const CollisionHull hull = makeCollisionHull(box);
+  const auto pb = pose({0.1, 0, 0.995}, rotation(0.01, Vector3d(1, 2, 3)));
+  SatCache cache;
+  ContactManifold first, second;
+  REQUIRE(collide(hull, kIdentity, hull, pb, 0.01, cache, first));
+  REQUIRE(collide(hull, kIdentity, hull, pb, 0.01, cache, second));
+  CHECK(cache.last_use == SatCache::Use::Reused);
+  CHECK(first.normal == second.normal);
+  REQUIRE(first.points.size() == second.points.size());
+  for (size_t i = 0; i < first.points.size(); ++i) {
+    CHECK(first.points[i].position == second.points[i].position);
+    CHECK(first.points[i].depth == second.points[i].depth);
+    CHECK(first.points[i].feature == second.points[i].feature);
+  }
+}
+
+TEST_CASE("a box resting flat stays face-face under small tilts", "[narrow]") {
+  const ConvexPiece box = makeBox(Vector3d(0.5, 0.5, 0.5));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < 200; ++i) {
+    const auto q = rotation(1e-4 * std::abs(u(rng)), Vector3d(u(rng), u(rng), u(rng))) *
+                   rotation(u(rng), Vector3d::UnitZ());
+    SatCache cache;
+    const auto m = collide(box, kIdentity, box, pose({0.3 * u(rng), 0.3 * u(rng), 0.999}, q), 0.0,
+                           cache);
+    REQUIRE(m);
+    CHECK(cache.axis != SatCache::Axis::Edges);
+    CHECK(m->points.size() >= 3);
+    CHECK(m->normal.z() > 0.999);
+  }
+}
