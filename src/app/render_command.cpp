@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
+#include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_drawing.h"
 #include "app/scene_options.h"
@@ -150,9 +151,7 @@ int run(const RenderOptions& o) {
                  formatSeconds(times.render).c_str(), formatSeconds(times.read_back).c_str(),
                  formatSeconds(times.encode).c_str(), done / std::max(wall, 1e-9));
   }
-  if (o.scene.verbose)
-    for (const StageTime& s : simulator.pipeline().profile())
-      std::fprintf(stderr, "  stage %-10s %s\n", s.name.c_str(), formatSeconds(s.seconds).c_str());
+  if (o.scene.verbose) printPipelineStats(simulator.pipeline());
   return interrupted ? static_cast<int>(ExitCode::Interrupted) : 0;
 }
 

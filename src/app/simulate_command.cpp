@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_options.h"
 #include "base/error.h"
@@ -71,9 +72,7 @@ int run(const SimulateOptions& o) {
                  simulated > 0 ? wall / simulated : 0.0, csv ? "; trajectory in " : "",
                  csv ? o.trajectory.c_str() : "");
   }
-  if (o.scene.verbose)
-    for (const StageTime& s : simulator.pipeline().profile())
-      std::fprintf(stderr, "  stage %-10s %.4f s\n", s.name.c_str(), s.seconds);
+  if (o.scene.verbose) printPipelineStats(simulator.pipeline());
   return 0;
 }
 

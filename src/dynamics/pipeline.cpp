@@ -1,19 +1,15 @@
 #include "dynamics/pipeline.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "dynamics/gravity.h"
+#include "dynamics/time_of_impact.h"
 
 namespace tumble {
 namespace {
 
-// Times one stage and adds its wall time to the stage's entry in the profile.
-template <typename F>
-void timed(StageTime& entry, F&& stage) {
-  auto start = std::chrono::steady_clock::now();
-  stage();
-  entry.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+const char* kStageNames[] = {"detect", "collide", "forces", "resting", "integrate", "back-step", "correct"};
 
 int movingBodies(const World& world) {
   int n = 0;
@@ -21,7 +17,28 @@ int movingBodies(const World& world) {
   return n;
 }
 
+// The thinnest width of a piece: the smallest extent of its vertices along a face normal.
+double thickness(const ConvexPiece& piece) {
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& n : piece.face_normals) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Eigen::Vector3d& v : piece.vertices) {
+      lo = std::min(lo, n.dot(v));
+      hi = std::max(hi, n.dot(v));
+    }
+    thinnest = std::min(thinnest, hi - lo);
+  }
+  return thinnest;
+}
+
 }  // namespace
+
+template <typename F>
+void Pipeline::timed(Stage stage, F&& work) {
+  auto start = std::chrono::steady_clock::now();
+  work();
+  profile_[stage].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 Pipeline::Pipeline(const World& world, const StepSettings& settings)
     : apply_gravity_(world.gravity.squaredNorm() > 0),
@@ -29,28 +46,169 @@ Pipeline::Pipeline(const World& world, const StepSettings& settings)
       static_(static_cast<int>(world.bodies.size()) - moving_),
       integrator_(settings.integrator),
       dt_(settings.dt),
+      detector_(world),
       wrenches_(world.bodies.size()) {
-  if (apply_gravity_) profile_.push_back({"forces"});
-  profile_.push_back({"integrate"});
+  has_contacts_ = detector_.hasCollidablePairs();
+  min_thickness_ = std::numeric_limits<double>::infinity();
+  for (const RigidBody& body : world.bodies) {
+    double radius = 0;
+    for (const ConvexPiece& piece : body.pieces) {
+      min_thickness_ = std::min(min_thickness_, thickness(piece));
+      for (const Eigen::Vector3d& v : piece.vertices) radius = std::max(radius, v.norm());
+    }
+    body_radius_.push_back(radius);
+  }
+  for (const char* name : kStageNames) profile_.push_back({name});
 }
 
 void Pipeline::step(World& world, const StepSettings& settings) {
-  std::size_t stage = 0;
-  if (apply_gravity_) timed(profile_[stage++], [&] { applyGravity(world, wrenches_); });
-  timed(profile_[stage++], [&] { integrate(world, wrenches_, settings); });
-  world.time += settings.dt;
+  double start_time = world.time;
+  double remaining = settings.dt;
+  // Sub-steps end at first contacts; a few per step is normal. The cap only stops a pathological
+  // case (a contact that back-stepping cannot resolve) from hanging the run; it is counted.
+  for (int i = 0; i < 256 && remaining > 1e-12 * settings.dt; ++i) {
+    world.time = start_time + (settings.dt - remaining);
+    remaining -= substep(world, settings, remaining);
+  }
+  if (remaining > 1e-12 * settings.dt) ++counters_.stuck_substeps;
+  world.time = start_time + settings.dt;
+}
+
+double Pipeline::substep(World& world, const StepSettings& settings, double remaining) {
+  ++counters_.substeps;
+  if (has_contacts_ && !contacts_fresh_)
+    timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
+  if (has_contacts_) {
+    bool hit = false;
+    // A bounce slower than what gravity takes away in about two steps cannot leave the surface
+    // for a whole step: resolved elastically it would come back every step (v -> e v - g dt has
+    // the fixed point g dt / (1 - e)) and never come to rest. Such impacts are made inelastic.
+    double min_bounce = std::max(settings.contact.resting_speed_m_s, 2 * world.gravity.norm() * settings.dt);
+    timed(Collide, [&] {
+      hit = resolveCollisions(world, contacts_now_, settings.contact, min_bounce, counters_.contacts);
+    });
+    if (hit && counters_.impact_times.size() < 1000) counters_.impact_times.push_back(world.time);
+  }
+  timed(Forces, [&] {
+    if (apply_gravity_) applyGravity(world, wrenches_);
+    else for (Wrench& w : wrenches_) w = Wrench{};
+  });
+  if (has_contacts_)
+    timed(Resting, [&] { addRestingForces(world, contacts_now_, settings.contact, wrenches_, counters_.contacts); });
+
+  double h = has_contacts_ ? std::min(remaining, tunnellingBound(world, remaining)) : remaining;
+  StepSettings sub = settings;
+  sub.dt = h;
+  if (has_contacts_) snapshot_.save(world);
+  timed(Integrate, [&] { integrate(world, wrenches_, sub); });
+  if (!has_contacts_) return h;
+
+  timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_end_, &pairs_end_); });
+  double taken = h;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const Contact& c : contacts_end_) deepest = std::max(deepest, c.depth);
+  if (deepest > settings.contact.tolerance_m) timed(BackStep, [&] { taken = backStep(world, settings, h); });
+  if (taken == h) {
+    std::swap(contacts_now_, contacts_end_);
+    std::swap(pairs_now_, pairs_end_);
+    contacts_fresh_ = true;
+  } else {
+    contacts_fresh_ = false;
+  }
+  timed(Correct, [&] { correctPenetration(world, settings); });
+  return taken;
+}
+
+// Bounds every body's motion within a sub-step so that no pair can pass through each other
+// unseen: two bodies closing at most 2 u per second cannot cross a piece of thickness t within
+// t / (4 u) seconds without ending the sub-step overlapping (which back-stepping then resolves).
+// u bounds a body's point speeds over the step: |v| + |a| h + |w| r.
+double Pipeline::tunnellingBound(const World& world, double h) const {
+  double u = 0;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& b = world.bodies[i];
+    if (b.is_static) continue;
+    double speed = b.velocity().norm() + wrenches_[i].force.norm() * b.inv_mass * h +
+                   b.angularVelocity().norm() * body_radius_[i];
+    u = std::max(u, speed);
+  }
+  if (u <= 0 || !std::isfinite(min_thickness_)) return h;
+  return std::max(min_thickness_ / (4 * u), 1e-9 * h);
+}
+
+// The trial sub-step of length h ended with pairs deeper than the tolerance: go back and find the
+// first time they touch (seed 000). Only the pairs that became too deep are watched; the world is
+// re-integrated from the saved state for each trial time.
+double Pipeline::backStep(World& world, const StepSettings& settings, double h) {
+  ++counters_.back_steps;
+  const double tol = settings.contact.tolerance_m;
+  // A pair is an impact to go back for when it ends deeper than the tolerance and deeper than it
+  // started by more than the tolerance. A touching pair that only drifts a little deeper (rounding,
+  // a resting contact) is left to the position correction: bisection would find no earlier time
+  // at which it touches, and would cut the step to nothing.
+  std::vector<PiecePair> offending;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < contacts_end_.size(); ++i) {
+    if (contacts_end_[i].depth <= tol) continue;
+    double before = -std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < contacts_now_.size(); ++j)
+      if (pairs_now_[j] == pairs_end_[i]) before = std::max(before, contacts_now_[j].depth);
+    if (contacts_end_[i].depth <= before + tol) continue;
+    if (offending.empty() || !(offending.back() == pairs_end_[i])) offending.push_back(pairs_end_[i]);
+    deepest = std::max(deepest, contacts_end_[i].depth);
+  }
+  if (offending.empty()) return h;
+  StepSettings sub = settings;
+  auto depth_at = [&](double t) {
+    snapshot_.restore(world);
+    sub.dt = t;
+    integrate(world, wrenches_, sub);
+    return detector_.maxDepth(world, offending);
+  };
+  ImpactSearch found = findFirstContact(depth_at, h, deepest, tol, settings.contact.max_bisections,
+                                        settings.contact.regula_falsi);
+  counters_.bisection_evaluations += found.evaluations;
+  depth_at(found.time);
+  return found.time;
+}
+
+// Drift: residual penetration deeper than the tolerance is removed by moving the two bodies apart
+// along the normal, in inverse proportion to their masses. Only positions move, never velocities,
+// so no kinetic energy is added (unlike a Baumgarte term, which pushes bodies apart with speed).
+void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
+  for (const Contact& c : contacts_now_) {
+    if (c.depth <= settings.contact.tolerance_m) continue;
+    RigidBody& A = world.bodies[c.a];
+    RigidBody& B = world.bodies[c.b];
+    double wa = A.inv_mass, wb = B.inv_mass;
+    if (wa + wb <= 0) continue;
+    double push = c.depth - 0.5 * settings.contact.tolerance_m;
+    A.x -= c.normal * (push * wa / (wa + wb));
+    B.x += c.normal * (push * wb / (wa + wb));
+    ++counters_.projections;
+    contacts_fresh_ = false;
+  }
 }
 
 std::vector<std::string> Pipeline::describe() const {
   std::vector<std::string> lines;
   std::string moving = std::to_string(moving_) + (moving_ == 1 ? " moving body" : " moving bodies");
+  if (has_contacts_) {
+    lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space");
+    lines.push_back("collide     Newton impulses on colliding contacts (LCP on impulses, friction)");
+  }
   if (apply_gravity_) lines.push_back("forces      gravity on " + moving);
+  if (has_contacts_) lines.push_back("resting     contact forces: LCP a = A f + b (Dantzig pivoting) + Coulomb friction");
   lines.push_back(std::string("integrate   ") +
                   (integrator_ == Integrator::Rk4 ? "RK4" : "semi-implicit Euler") + ", dt = " +
                   std::to_string(dt_) + " s, " + moving + "; " + std::to_string(static_) +
                   " static never integrated");
-  lines.push_back("contacts    none: the contact pipeline is not built yet, bodies pass through "
-                  "each other");
+  if (has_contacts_) {
+    lines.push_back("back-step   bisection to the first contact when a step ends too deep");
+    lines.push_back("correct     position projection of residual penetration");
+  } else {
+    lines.push_back("contacts    none needed: nothing in this scene can touch");
+  }
   return lines;
 }
 

@@ -1,25 +1,43 @@
 // The simulation step, written down in one place: a list of named stages, each in a file of its
 // own, each timed. The pipeline holds only the stages the scene needs ("model only what a scene
-// needs"): a world without gravity skips the force stage, static bodies are never integrated.
+// needs"): without gravity there is no force stage, without anything that can touch there is no
+// contact stage, static bodies are never integrated.
 //
-// Stages today:  forces (gravity) -> integrate.
-// The contact pipeline (DESIGN.md steps 1-6: broad phase, narrow phase, back-stepping, classify,
-// impulses, resting forces) slots in between and is not built yet: bodies pass through each other.
+//   detect     broad phase + narrow phase          contact_detection.cpp (collision/)
+//   collide    classify; impulses (Newton)         contact_solver.cpp
+//   forces     gravity                             gravity.cpp
+//   resting    contact forces, LCP + friction      contact_solver.cpp (lcp/)
+//   integrate  (x, q, P, L) over the sub-step      integrator.cpp
+//   back-step  bisection to the first contact      time_of_impact.cpp
+//   correct    project out residual penetration    pipeline.cpp (correctPenetration)
+//
+// A step of dt may be cut into sub-steps: at each first contact found by back-stepping, and where
+// a body moves fast enough to pass through the thinnest piece (the tunnelling bound).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "dynamics/body_snapshot.h"
+#include "dynamics/contact_detection.h"
+#include "dynamics/contact_solver.h"
 #include "dynamics/integrator.h"
 #include "dynamics/step_settings.h"
 #include "dynamics/world.h"
 
 namespace tumble {
 
-// Wall time per stage, summed over the steps taken (for --stats and benchmarks).
+// Wall time per stage, summed over the steps taken (for -v and benchmarks).
 struct StageTime {
   std::string name;
   double seconds = 0;
+};
+
+struct PipelineCounters {
+  long substeps = 0, back_steps = 0, bisection_evaluations = 0, stuck_substeps = 0;
+  long projections = 0;
+  ContactSolveStats contacts;
+  std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
 };
 
 class Pipeline {
@@ -30,14 +48,33 @@ class Pipeline {
   // One line per stage: what it does in this scene (for `tumble check`).
   std::vector<std::string> describe() const;
   const std::vector<StageTime>& profile() const { return profile_; }
+  const PipelineCounters& counters() const { return counters_; }
+  // The contacts found at the end of the last step (for overlays and tests).
+  const std::vector<Contact>& contacts() const { return contacts_now_; }
 
  private:
+  enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, StageCount };
+  double substep(World& world, const StepSettings& settings, double remaining);
+  double tunnellingBound(const World& world, double h) const;
+  double backStep(World& world, const StepSettings& settings, double h);
+  void correctPenetration(World& world, const StepSettings& settings);
+  template <typename F> void timed(Stage stage, F&& work);
+
   bool apply_gravity_ = false;
+  bool has_contacts_ = false;
   int moving_ = 0, static_ = 0;
   Integrator integrator_ = Integrator::Rk4;
   double dt_ = 0;
+  ContactDetector detector_;
+  std::vector<Contact> contacts_now_, contacts_end_;
+  std::vector<PiecePair> pairs_now_, pairs_end_;
+  bool contacts_fresh_ = false;
   std::vector<Wrench> wrenches_;
+  BodySnapshot snapshot_;
+  double min_thickness_ = 0;
+  std::vector<double> body_radius_;
   std::vector<StageTime> profile_;
+  PipelineCounters counters_;
 };
 
 }  // namespace tumble

@@ -1,6 +1,7 @@
 // Settings of one simulation step. Read-only during a step: stages take `const StepSettings&`.
 #pragma once
 
+#include "dynamics/contact.h"
 #include "scene/scene.h"
 
 namespace tumble {
@@ -8,6 +9,7 @@ namespace tumble {
 struct StepSettings {
   double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
   Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
+  ContactSettings contact;                        // detection margin, tolerances, thresholds
 };
 
 }  // namespace tumble

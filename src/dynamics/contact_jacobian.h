@@ -1,0 +1,40 @@
+// The contact Jacobian J and the Delassus matrix A = J M^-1 J^T: how a unit force (or impulse)
+// along one contact direction changes the relative acceleration (or velocity) along another. Both
+// the impulse solve (colliding contacts) and the force solve (resting contacts) are LCPs in A
+// (seed 000, the impulse formula; seed 002, Baraff's a = A f + b).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+// One row of J: a direction at a contact point. A force f along it pushes B by +f dir, A by -f dir.
+struct ContactRow {
+  int a = -1, b = -1;
+  Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ra = Eigen::Vector3d::Zero(), rb = Eigen::Vector3d::Zero();   // p - x_a, p - x_b
+};
+
+ContactRow rowAlong(const World& world, const Contact& c, const Eigen::Vector3d& dir);
+// Two unit tangents completing the normal to a right-handed frame, chosen from the world axis
+// least aligned with n (so a horizontal contact gets the world's x and y: deterministic, and the
+// friction pyramid is exact for motion along those axes).
+void tangentsOf(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& t2);
+
+// World-frame inverse inertia R I^-1 R^T (zero for static bodies).
+Eigen::Matrix3d inverseInertiaWorld(const RigidBody& body);
+// Velocity of the material point of `body` at world point p.
+Eigen::Vector3d pointVelocity(const RigidBody& body, const Eigen::Vector3d& p);
+// J_row v: relative velocity of B with respect to A along the row's direction.
+double rowVelocity(const World& world, const ContactRow& row);
+
+// A = J M^-1 J^T for the given rows (symmetric positive semi-definite).
+Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows);
+// Applies impulses (N s) along the rows: P and L of both bodies change at once.
+void applyAlongRows(World& world, const std::vector<ContactRow>& rows, const Eigen::VectorXd& f);
+
+}  // namespace tumble

@@ -1,0 +1,40 @@
+// Contact pipeline steps 4-6 (DESIGN.md): classify contacts by their normal relative velocity,
+// resolve colliding ones with impulses (Newton's restitution law, all at once as an LCP on
+// impulses), and find the forces of resting ones (Baraff's LCP a = A f + b, a >= 0, f >= 0,
+// a^T f = 0) with Coulomb friction.
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/integrator.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+enum class ContactClass { Separating, Resting, Colliding };
+
+// Touching contacts (|depth| within tolerance) only; others are Separating.
+ContactClass classify(const World& world, const Contact& c, const ContactSettings& settings);
+
+struct ContactSolveStats {
+  int colliding = 0, resting = 0;   // contacts of each class seen
+  int pivots = 0;                   // LCP pivots spent
+  int failures = 0;                 // LCP solves that did not converge (result used anyway)
+};
+
+// Applies restitution impulses to every colliding contact, together with the touching contacts
+// around them (so a flat face landing on 4 corners, or a stack being hit, is solved as one
+// system). Returns true if any contact was colliding.
+// Impacts slower than `min_bounce_speed` (m/s) get no restitution: see Pipeline for why.
+bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
+                       const ContactSettings& settings, double min_bounce_speed,
+                       ContactSolveStats& stats);
+
+// Adds the resting-contact forces (normal and friction) to `wrenches`, which hold the applied
+// forces on entry (they determine the accelerations the contacts must cancel).
+void addRestingForces(const World& world, const std::vector<Contact>& contacts,
+                      const ContactSettings& settings, std::vector<Wrench>& wrenches,
+                      ContactSolveStats& stats);
+
+}  // namespace tumble

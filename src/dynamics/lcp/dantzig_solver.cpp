@@ -1,0 +1,92 @@
+#include "dynamics/lcp/dantzig_solver.h"
+
+#include "dynamics/lcp/boxed_pivoting.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble::lcp {
+
+namespace {
+
+// Normal forces (and every other non-friction variable) first, then friction in index order: when
+// a friction variable is driven, the normal force its bound comes from has already been settled
+// (ODE's dLCP orders its unknowns the same way).
+std::vector<int> processingOrder(const LcpProblem& p) {
+  std::vector<int> order;
+  order.reserve(p.size());
+  for (int i = 0; i < p.size(); ++i)
+    if (!p.isFriction(i)) order.push_back(i);
+  for (int i = 0; i < p.size(); ++i)
+    if (p.isFriction(i)) order.push_back(i);
+  return order;
+}
+
+bool hasFriction(const LcpProblem& p) {
+  return std::any_of(p.friction_of.begin(), p.friction_of.end(), [](int k) { return k >= 0; });
+}
+
+// Whether the friction bounds newHi equal the ones used (hi) to friction_tolerance·(1 + max bound).
+bool boundsConverged(const LcpProblem& p, const Eigen::VectorXd& hi, const Eigen::VectorXd& newHi,
+                     double tol) {
+  double change = 0, scale = 0;
+  for (int i = 0; i < p.size(); ++i) {
+    if (!p.isFriction(i)) continue;
+    change = std::max(change, std::abs(newHi[i] - hi[i]));
+    scale = std::max(scale, newHi[i]);
+  }
+  return change <= tol * (1.0 + scale);
+}
+
+void finish(const LcpProblem& p, LcpResult& r) {
+  r.w = p.A * r.f + p.b;
+  r.residual = measureResidual(p, r.f, r.w);
+}
+
+// One boxed LCP with the bounds fixed; adds its pivots to r.
+LcpStatus solveFixedBounds(const LcpProblem& p, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                           const DantzigSettings& s, LcpResult& r) {
+  BoxedPivoting engine(p.A, p.b, lo, hi, s);
+  const LcpStatus status = engine.run(processingOrder(p), s.max_pivots_per_variable * p.size() + 16);
+  r.f = engine.f();
+  r.iterations += engine.pivots();
+  return status;
+}
+
+}  // namespace
+
+// Friction bounds ±mu·f_n depend on the unknowns. Each pass solves the boxed LCP with the bounds
+// frozen at the previous pass's normal forces (pass 0 has none: bounds [0, 0], the frictionless
+// problem) — a fixed point f_n = F(mu·f_n). It stops when the bounds reproduce themselves, so the
+// returned f satisfies the friction cone exactly at its own normal forces. In a fixed set of sliding
+// contacts the map is affine with slope mu·(moment arm ratio) < 1 for contacts that do not tip, so
+// the error shrinks geometrically; a cap turns a non-converging case into MaxIterations.
+LcpResult solveDantzig(const LcpProblem& p, const DantzigSettings& s) {
+  LcpResult r;
+  r.f = Eigen::VectorXd::Zero(p.b.size());
+  if (*validate(p) != '\0') {
+    r.w = p.b;
+    return r;
+  }
+  Eigen::VectorXd lo = p.lo, hi = p.hi;
+  const bool friction = hasFriction(p);
+  if (friction) effectiveBounds(p, r.f, lo, hi);  // f = 0: friction bounds [0, 0]
+  r.status = solveFixedBounds(p, lo, hi, s, r);
+  for (int pass = 1; friction && r.status == LcpStatus::Solved; ++pass) {
+    Eigen::VectorXd nlo, nhi;
+    effectiveBounds(p, r.f, nlo, nhi);
+    if (boundsConverged(p, hi, nhi, s.friction_tolerance)) break;
+    if (pass > s.max_friction_passes) {
+      r.status = LcpStatus::MaxIterations;
+      break;
+    }
+    lo = nlo;
+    hi = nhi;
+    r.friction_passes = pass;
+    r.status = solveFixedBounds(p, lo, hi, s, r);
+  }
+  finish(p, r);
+  return r;
+}
+
+}  // namespace tumble::lcp
