@@ -1,0 +1,56 @@
+#include "contact_scene_runner.h"
+
+#include <algorithm>
+
+#include "collision/collision_hull.h"
+#include "collision/narrow_phase.h"
+#include "dynamics/contact_detection.h"
+#include "dynamics/world_builder.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
+
+namespace tumble::test {
+
+double worldPenetration(const World& world) {
+  double deepest = 0;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& a = world.bodies[i];
+    if (a.shape == ShapeKind::Plane) continue;
+    for (const ConvexPiece& pa : a.pieces) {
+      CollisionHull ha = makeCollisionHull(pa);
+      for (std::size_t j = 0; j < world.bodies.size(); ++j) {
+        const RigidBody& b = world.bodies[j];
+        if (j == i || (a.is_static && b.is_static)) continue;
+        if (b.shape == ShapeKind::Plane) {
+          deepest = std::max(deepest, -groundSeparation(pa, poseOf(a), b.x.z()));
+          continue;
+        }
+        if (j < i) continue;
+        for (const ConvexPiece& pb : b.pieces) {
+          SatCache cache;
+          // For overlapping convex pieces the SAT value is minus the penetration depth.
+          deepest = std::max(deepest, -separation(ha, poseOf(a), makeCollisionHull(pb), poseOf(b), cache));
+        }
+      }
+    }
+  }
+  return deepest;
+}
+
+SceneRun runScene(const std::string& name, double seconds,
+                  const std::function<void(const World&)>& on_step) {
+  Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + name + ".json");
+  setDuration(scene, seconds);
+  scene.render.frames += 1;   // frame k is at (k-1)/fps: one more frame reaches `seconds`
+  BuiltWorld built = buildWorld(scene);
+  SceneRun run;
+  Simulator sim(std::move(built.world), {built.step, scene.simulation.steps_per_frame, scene.render.frames});
+  run.trajectory = sim.run({}, [&](const World& w) {
+    run.max_penetration = std::max(run.max_penetration, worldPenetration(w));
+    if (on_step) on_step(w);
+  });
+  run.counters = sim.pipeline().counters();
+  return run;
+}
+
+}  // namespace tumble::test

@@ -1,0 +1,26 @@
+// Runs a scene from scenes/ without rendering, sampling every step, and measures what the
+// benchmark (shared/bench/SCENES.md) measures: penetration from the poses, not from the solver.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "dynamics/simulator.h"
+
+namespace tumble::test {
+
+struct SceneRun {
+  double max_penetration = 0;   // m: deepest overlap of any pair (ground, static, bodies) seen
+  Trajectory trajectory;        // one sample per frame
+  PipelineCounters counters;
+};
+
+// Simulates scenes/NAME.json for `seconds` (rounded to whole frames), calling `on_step` after
+// every step. Penetration is measured after every step.
+SceneRun runScene(const std::string& name, double seconds,
+                  const std::function<void(const World&)>& on_step = {});
+
+// Deepest overlap in the world now (m, 0 when nothing overlaps), measured geometrically.
+double worldPenetration(const World& world);
+
+}  // namespace tumble::test
