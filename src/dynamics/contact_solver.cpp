@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "dynamics/contact_islands.h"
 #include "dynamics/contact_jacobian.h"
 #include "dynamics/lcp/dantzig_solver.h"
 
@@ -79,6 +80,30 @@ ContactClass classify(const World& world, const Contact& c, const ContactSetting
   return ContactClass::Resting;
 }
 
+namespace {
+
+// Solves Newton's law for one island of touching contacts (see resolveCollisions).
+void collideIsland(World& world, const std::vector<const Contact*>& set, const ContactSettings& s,
+                   double min_bounce_speed, ContactSolveStats& stats) {
+  std::vector<double> vn, e;
+  bool any = false;
+  for (const Contact* c : set) {
+    vn.push_back(normalVelocity(world, *c));
+    bool colliding = vn.back() < -s.resting_speed_m_s;
+    any |= colliding;
+    stats.colliding += colliding;
+    e.push_back(colliding && vn.back() < -min_bounce_speed ? c->restitution : 0.0);
+  }
+  if (!any) return;
+  ContactLcp lcp = buildRows(world, set, std::vector<char>(set.size(), 1));
+  for (std::size_t r = 0; r < lcp.rows.size(); ++r) lcp.problem.b[r] = rowVelocity(world, lcp.rows[r]);
+  for (std::size_t i = 0; i < set.size(); ++i) lcp.problem.b[lcp.normal_row[i]] = (1 + e[i]) * vn[i];
+  lcp::LcpResult r = solve(lcp.problem, stats);
+  applyAlongRows(world, lcp.rows, r.f);
+}
+
+}  // namespace
+
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
                        double min_bounce_speed, ContactSolveStats& stats) {
   // Newton's law per contact: v+ >= -e v-, j >= 0, (v+ + e v-) j = 0. Written as an LCP in the
@@ -86,25 +111,16 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
   // impact is passed on through what it presses against. Friction rows ask for zero tangential
   // velocity after the impact, with |j_t| <= mu j_n (Coulomb on impulses).
   std::vector<const Contact*> set;
-  std::vector<double> vn, e;
   bool any = false;
   for (const Contact& c : contacts) {
     ContactClass k = classify(world, c, s);
     if (k == ContactClass::Separating) continue;
     any |= k == ContactClass::Colliding;
     set.push_back(&c);
-    vn.push_back(normalVelocity(world, c));
-    e.push_back(k == ContactClass::Colliding && vn.back() < -min_bounce_speed ? c.restitution : 0.0);
   }
   if (!any) return false;
-  ContactLcp lcp = buildRows(world, set, std::vector<char>(set.size(), 1));
-  for (std::size_t r = 0; r < lcp.rows.size(); ++r) lcp.problem.b[r] = rowVelocity(world, lcp.rows[r]);
-  for (std::size_t i = 0; i < set.size(); ++i) {
-    lcp.problem.b[lcp.normal_row[i]] = (1 + e[i]) * vn[i];
-    stats.colliding += e[i] > 0 || vn[i] < -s.resting_speed_m_s;
-  }
-  lcp::LcpResult r = solve(lcp.problem, stats);
-  applyAlongRows(world, lcp.rows, r.f);
+  for (const std::vector<const Contact*>& island : splitIntoIslands(world, set))
+    collideIsland(world, island, s, min_bounce_speed, stats);
   return true;
 }
 
@@ -166,15 +182,8 @@ Eigen::VectorXd freeAccelerations(const World& world, const ContactLcp& lcp,
   return b;
 }
 
-}  // namespace
-
-void addRestingForces(const World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                      std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
-  std::vector<const Contact*> resting;
-  for (const Contact& c : contacts)
-    if (classify(world, c, s) == ContactClass::Resting) resting.push_back(&c);
-  if (resting.empty()) return;
-  stats.resting += static_cast<int>(resting.size());
+void restIsland(const World& world, const std::vector<const Contact*>& resting, const ContactSettings& s,
+                std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
   // Static friction joins the LCP (tangential acceleration 0 while |f_t| <= mu f_n). A sliding
   // contact feels dynamic friction mu f_n against its sliding direction instead: a force that
   // depends on the unknown f_n, found by fixed-point iteration on f_n (exact once f_n is steady).
@@ -214,6 +223,19 @@ void addRestingForces(const World& world, const std::vector<Contact>& contacts, 
   }
   addForces(world, lcp.rows, r.f, wrenches);
   if (m > 0) addForces(world, slide_rows, g, wrenches);
+}
+
+}  // namespace
+
+void addRestingForces(const World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
+                      std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+  std::vector<const Contact*> resting;
+  for (const Contact& c : contacts)
+    if (classify(world, c, s) == ContactClass::Resting) resting.push_back(&c);
+  stats.resting += static_cast<int>(resting.size());
+  // Wrenches of one island depend only on that island's bodies, so the order is immaterial.
+  for (const std::vector<const Contact*>& island : splitIntoIslands(world, resting))
+    restIsland(world, island, s, wrenches, stats);
 }
 
 }  // namespace tumble

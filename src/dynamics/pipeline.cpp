@@ -142,10 +142,11 @@ double Pipeline::tunnellingBound(const World& world, double h) const {
 double Pipeline::backStep(World& world, const StepSettings& settings, double h) {
   ++counters_.back_steps;
   const double tol = settings.contact.tolerance_m;
-  // A pair is an impact to go back for when it ends deeper than the tolerance and deeper than it
-  // started by more than the tolerance. A touching pair that only drifts a little deeper (rounding,
-  // a resting contact) is left to the position correction: bisection would find no earlier time
-  // at which it touches, and would cut the step to nothing.
+  // A pair is an impact to go back for when it ends deeper than the tolerance and was not touching
+  // at the start. A pair that was already touching (resting, or landing its other corners as it
+  // turns) is left to the impulse and position stages of the next sub-step: its depth is already
+  // within the tolerance at the start, so bisection on it would find no better time and would cut
+  // the step to nothing. This keeps back-stepping to the first contact of each pair.
   std::vector<PiecePair> offending;
   double deepest = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < contacts_end_.size(); ++i) {
@@ -153,7 +154,7 @@ double Pipeline::backStep(World& world, const StepSettings& settings, double h) 
     double before = -std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < contacts_now_.size(); ++j)
       if (pairs_now_[j] == pairs_end_[i]) before = std::max(before, contacts_now_[j].depth);
-    if (contacts_end_[i].depth <= before + tol) continue;
+    if (before >= -tol) continue;
     if (offending.empty() || !(offending.back() == pairs_end_[i])) offending.push_back(pairs_end_[i]);
     deepest = std::max(deepest, contacts_end_[i].depth);
   }
