@@ -11,7 +11,7 @@ TEST_CASE("frames default to the whole clip, counted from 1", "[cli]") {
   CHECK(selectFrames(10, 3, 5, "") == std::vector<int>{3, 4, 5});
 }
 
-TEST_CASE("--frames lists and ranges, sorted and deduplicated", "[cli]") {
+TEST_CASE("frame lists (--frames) take numbers and ranges, and ranges, sorted and deduplicated", "[cli]") {
   CHECK(selectFrames(30, {}, {}, "1,5,10..12, 5") == std::vector<int>{1, 5, 10, 11, 12});
 }
 

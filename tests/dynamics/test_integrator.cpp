@@ -30,7 +30,9 @@ Drift spin(Integrator integrator, double dt, double seconds) {
   World world = freeSpinWorld();
   const RigidBody& b0 = world.bodies[0];
   double E0 = b0.kineticEnergy(), L0 = b0.L.norm();
-  StepSettings step{dt, integrator};
+  StepSettings step;
+  step.dt = dt;
+  step.integrator = integrator;
   std::vector<Wrench> none(1);
   Drift d;
   double last_wy = 1;
@@ -100,7 +102,9 @@ TEST_CASE("semi-implicit Euler keeps |L| exactly and energy bounded", "[dynamics
 TEST_CASE("the same scene gives bit-identical trajectories", "[dynamics][determinism]") {
   auto run = [] {
     World w = freeSpinWorld();
-    Simulator sim(std::move(w), {{1.0 / 240, Integrator::Rk4}, 8, 90});
+    StepSettings step;
+    step.dt = 1.0 / 240;
+    Simulator sim(std::move(w), {step, 8, 90});
     return sim.run();
   };
   Trajectory a = run(), b = run();

@@ -7,7 +7,7 @@
 
 using namespace tumble;
 
-TEST_CASE("--fps keeps dt close and keeps the duration", "[scene]") {
+TEST_CASE("an --fps override keeps dt close and keeps the duration", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "render": {"fps": 30, "frames": 60},
     "bodies": [{"shape": "box"}]})", "t.json");
   setFrameRate(s, 60);
@@ -16,7 +16,7 @@ TEST_CASE("--fps keeps dt close and keeps the duration", "[scene]") {
   CHECK(s.simulation.dt_s == 1.0 / 240);
 }
 
-TEST_CASE("--dt that does not divide the frame interval is a usage error", "[scene]") {
+TEST_CASE("a --dt that does not divide the frame interval is a usage error", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "bodies": [{"shape": "box"}]})", "t.json");
   // 1/30 s / 1 ms = 33.3 steps: no whole number of steps lands on every frame.
   CHECK_THROWS_AS(setTimeStep(s, 0.001, "--dt"), Error);
@@ -25,7 +25,7 @@ TEST_CASE("--dt that does not divide the frame interval is a usage error", "[sce
   CHECK(s.simulation.dt_s == 1.0 / 30 / 10);
 }
 
-TEST_CASE("--size takes WIDTHxHEIGHT within limits", "[scene]") {
+TEST_CASE("the --size override takes WIDTHxHEIGHT within limits", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "bodies": [{"shape": "box"}]})", "t.json");
   setSize(s, "640x360");
   CHECK(s.render.width == 640);
