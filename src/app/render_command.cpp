@@ -1,4 +1,5 @@
 // tumble render SCENE [-o out.mp4 | -o 'out/frame_####.png'] ...
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -31,7 +32,21 @@ struct RenderOptions {
 // Wall time of each phase, for the closing summary.
 struct PhaseTimes {
   double simulate = 0, render = 0, read_back = 0, encode = 0;
+  std::vector<double> render_ms, read_back_ms, encode_ms;   // per frame, for -v medians
 };
+
+double medianOf(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+void printMedians(const PhaseTimes& t, double simulate_ms_per_frame) {
+  std::fprintf(stderr,
+               "  per frame (median): simulate %.2f ms (mean), render %.2f ms, read back %.2f ms, "
+               "encode %.2f ms\n",
+               simulate_ms_per_frame, medianOf(t.render_ms), medianOf(t.read_back_ms), medianOf(t.encode_ms));
+}
 
 void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
   if (!o.size.empty()) setSize(scene, o.size);
@@ -118,13 +133,16 @@ int run(const RenderOptions& o) {
     poseInstances(drawing, trajectory.frames[frame - 1], mesh_ids);
     start = std::chrono::steady_clock::now();
     renderer->draw(drawing.frame);
-    times.render += secondsSince(start);
+    times.render_ms.push_back(1e3 * secondsSince(start));
+    times.render += times.render_ms.back() / 1e3;
     start = std::chrono::steady_clock::now();
     renderer->readBack(image);
-    times.read_back += secondsSince(start);
+    times.read_back_ms.push_back(1e3 * secondsSince(start));
+    times.read_back += times.read_back_ms.back() / 1e3;
     start = std::chrono::steady_clock::now();
     sink->write(image, frame);
-    times.encode += secondsSince(start);
+    times.encode_ms.push_back(1e3 * secondsSince(start));
+    times.encode += times.encode_ms.back() / 1e3;
     progress.update(++done);
   }
   bool interrupted = done < static_cast<int>(frames.size());
@@ -151,7 +169,10 @@ int run(const RenderOptions& o) {
                  formatSeconds(times.render).c_str(), formatSeconds(times.read_back).c_str(),
                  formatSeconds(times.encode).c_str(), done / std::max(wall, 1e-9));
   }
-  if (o.scene.verbose) printPipelineStats(simulator.pipeline());
+  if (o.scene.verbose) {
+    printMedians(times, 1e3 * times.simulate / plan.frames);
+    printPipelineStats(simulator.pipeline());
+  }
   return interrupted ? static_cast<int>(ExitCode::Interrupted) : 0;
 }
 
