@@ -13,6 +13,11 @@ ImpactSearch findFirstContact(const std::function<double(double)>& depth_at, dou
   double f_lo = -std::numeric_limits<double>::infinity(), f_hi = depth_at_h;
   ImpactSearch out;
   int side = 0;   // Illinois: which end was kept last, to halve its weight when kept twice
+  if (regula_falsi) {
+    // The secant needs the depth at the start of the step too.
+    f_lo = depth_at(0);
+    ++out.evaluations;
+  }
   for (int i = 0; i < max_iterations; ++i) {
     double t = 0.5 * (lo + hi);
     if (regula_falsi && std::isfinite(f_lo)) {
