@@ -77,6 +77,8 @@ struct SimulationSpec {
   int steps_per_frame = 8;
   Integrator integrator = Integrator::Rk4;
   Eigen::Vector3d gravity_m_s2{0, 0, -9.81};
+  bool regula_falsi = false;                           // contact time search: bisection or secant
+  double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
 };
 
 struct Scene {

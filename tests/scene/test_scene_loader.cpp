@@ -87,6 +87,14 @@ TEST_CASE("dt_s must divide the frame interval; the exact step is interval / ste
   CHECK_THAT(bad.message, Catch::Contains("/simulation/dt_s") && Catch::Contains("does not divide"));
 }
 
+TEST_CASE("the contact time search and tolerance are scene settings", "[scene]") {
+  Scene s = parseScene(R"({"schema_version": 1, "simulation": {"time_of_impact": "regula_falsi",
+    "contact_tolerance_m": 1e-5}, "bodies": [{"shape": "box"}]})", "scenes/test.json");
+  CHECK(s.simulation.regula_falsi);
+  CHECK(s.simulation.contact_tolerance_m == 1e-5);
+  CHECK_FALSE(parseScene(kMinimal, "scenes/test.json").simulation.regula_falsi);
+}
+
 TEST_CASE("duration_s sets the frame count", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "render": {"fps": 25, "duration_s": 2},
     "bodies": [{"shape": "box"}]})", "scenes/test.json");
