@@ -1,6 +1,4 @@
-// Ten unit cubes stacked on the ground (benchmark S4). The issue asks for 10 s; the test runs the
-// first 2 s (the solver's answer is the same every step once the stack is at rest, so a longer
-// run only repeats it) and the benchmark runs the whole 10 s.
+// Ten unit cubes stacked on the ground (benchmark S4), for the full 10 s the issue asks for.
 #include <catch2/catch.hpp>
 
 #include "contact_scene_runner.h"
@@ -8,7 +6,7 @@
 using namespace tumble;
 
 TEST_CASE("stack of ten stands still", "[contact]") {
-  auto run = test::runScene("stack10", 2);
+  auto run = test::runScene("stack10", 10);
   const BodySample& top0 = run.trajectory.frames.front()[10];
   const BodySample& top1 = run.trajectory.frames.back()[10];
   CHECK((top1.x - top0.x).head<2>().norm() < 1e-4);
