@@ -20,6 +20,7 @@ const char* kExitCodes = R"(Exit codes:
   70  numerical failure during the simulation (NaN or infinite state)
   73  cannot create output: it exists (add -y) or the folder is not writable
   130 interrupted (Ctrl-C); the frames rendered so far are kept, a video is finalised
+diff, and render --check-against: 0 frames match, 1 some differ, 2 bad input (missing file, sizes differ)
 )";
 
 }  // namespace
@@ -33,8 +34,11 @@ int main(int argc, char** argv) {
       {"render", tumble::addRenderCommand(app)},
       {"simulate", tumble::addSimulateCommand(app)},
       {"check", tumble::addCheckCommand(app)},
+      {"diff", tumble::addDiffCommand(app)},
   };
-  for (CLI::App* sub : app.get_subcommands({})) sub->footer(kExitCodes);
+  // diff has its own exit codes (0/1/2, as diff tools) and footer.
+  for (CLI::App* sub : app.get_subcommands({}))
+    if (sub->get_footer().empty()) sub->footer(kExitCodes);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/frame_check.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
 #include "app/pipeline_stats.h"
@@ -27,6 +28,8 @@ struct RenderOptions {
   std::string output, size, frames, shaders;
   std::optional<int> start, end, crf, samples, shadow_map_size;
   bool overwrite = false, skip_existing = false;
+  std::string check_against;   // folder of approved frames; empty: no check
+  CheckOptions check;
 };
 
 // Wall time of each phase, for the closing summary.
@@ -79,6 +82,13 @@ void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::ve
                                              : ""));
 }
 
+// Where a frame's diff image goes by default: next to its PNG, or beside a video as frame_####.
+std::filesystem::path checkedFramePath(const OutputTarget& target, int frame) {
+  if (target.kind == OutputTarget::Kind::PngSequence) return framePath(target, frame);
+  std::filesystem::path folder = target.path.parent_path().empty() ? "." : target.path.parent_path();
+  return framePath(parseOutput((folder / "").string(), 2), frame);
+}
+
 std::string formatSeconds(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.2f s", s);
@@ -86,6 +96,10 @@ std::string formatSeconds(double s) {
 }
 
 int run(const RenderOptions& o) {
+  if (!o.check_against.empty() && !std::filesystem::is_directory(o.check_against)) {
+    std::fprintf(stderr, "tumble: --check-against: %s is not a folder of frames\n", o.check_against.c_str());
+    return static_cast<int>(CheckExit::BadInput);   // comparisons answer 2 for bad input, as diff does
+  }
   Scene scene = loadSceneWithOverrides(o.scene);
   applyRenderOverrides(o, scene);
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
@@ -99,6 +113,8 @@ int run(const RenderOptions& o) {
   SinkOptions sink_options{scene.render.width, scene.render.height, scene.render.fps,
                            scene.render.crf, o.overwrite, o.skip_existing};
   std::unique_ptr<FrameSink> sink = makeFrameSink(target, sink_options);
+  std::optional<CheckReport> check;
+  if (!o.check_against.empty()) check.emplace(o.check.settings, false);
 
   BuiltWorld built = buildWorld(scene);
   for (const std::string& w : built.warnings)
@@ -143,6 +159,8 @@ int run(const RenderOptions& o) {
     sink->write(image, frame);
     times.encode_ms.push_back(1e3 * secondsSince(start));
     times.encode += times.encode_ms.back() / 1e3;
+    if (check)   // in memory, so any output works, a video too
+      checkAgainstGolden(*check, o.check_against, image, frame, checkedFramePath(target, frame), o.check.diff_out);
     progress.update(++done);
   }
   bool interrupted = done < static_cast<int>(frames.size());
@@ -173,7 +191,10 @@ int run(const RenderOptions& o) {
     printMedians(times, 1e3 * times.simulate / plan.frames);
     printPipelineStats(simulator.pipeline());
   }
-  return interrupted ? static_cast<int>(ExitCode::Interrupted) : 0;
+  if (interrupted) return static_cast<int>(ExitCode::Interrupted);
+  if (!check) return 0;
+  if (!o.scene.quiet || check->exitCode() != 0) check->printSummary("tumble render --check-against");
+  return check->exitCode();
 }
 
 }  // namespace
@@ -197,6 +218,9 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("--shaders", o->shaders, "Folder of the GLSL shaders (default: the source tree's shaders/)");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--skip-existing", o->skip_existing, "Keep PNG frames that already exist (resume)");
+  cmd->add_option("--check-against", o->check_against,
+                  "Compare each frame with DIR/frame_####.png; exit 0 pass, 1 fail, 2 missing or other size");
+  addCheckOptions(*cmd, o->check);
   return [o] { return run(*o); };
 }
 
