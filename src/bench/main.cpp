@@ -1,0 +1,106 @@
+// tumble-bench: speed against error on the benchmark scenes of shared/bench/SCENES.md, tumble and
+// the peers found at build time side by side in one run. See the README, "Speed against error".
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "bench/bench_options.h"
+#include "bench/job_process.h"
+#include "bench/report.h"
+
+namespace tb = tumble::bench;
+
+namespace {
+
+bool selected(const tb::BenchOptions& o, const tb::EngineSetting& s) {
+  return o.settings.empty() || std::find(o.settings.begin(), o.settings.end(), s.name) != o.settings.end();
+}
+
+tb::SceneResults runScene(const tb::BenchScene& scene, const std::vector<tb::EngineSetting>& settings,
+                          const tb::BenchOptions& o) {
+  tb::SceneResults out{scene, {}, {}};
+  tb::RunOptions run = o.run;
+  for (const tb::EngineSetting& s : settings) {
+    if (!selected(o, s)) continue;
+    // A setting named on the command line runs even where it would be skipped by default.
+    const std::string why = o.settings.empty() ? s.skip_reason(scene) : "";
+    if (!why.empty()) {
+      out.skipped.push_back(s.name + ": " + why);
+      continue;
+    }
+    for (tb::RunResult& r : tb::runJobInChild(scene, s, run)) {
+      // A pile cut short by the wall cap sets the horizon the later engines are also timed and
+      // self-checked over, so that every engine is compared on the same stretch of the fall.
+      if (r.cut && scene.kind == tb::SceneKind::Pile && (run.head_s == 0 || r.simulated_s < run.head_s)) {
+        run.head_s = r.simulated_s;
+        run.sc_horizon_s = std::min(run.sc_horizon_s, run.head_s);
+      }
+      out.rows.push_back(std::move(r));
+    }
+  }
+  return out;
+}
+
+// What did not run in full, in one place at the end of the report.
+void printCuts(std::ostream& out, const std::vector<tb::SceneResults>& all) {
+  out << "\nCut, skipped or failed:\n";
+  int n = 0;
+  for (const tb::SceneResults& s : all) {
+    for (const tb::RunResult& r : s.rows)
+      if (r.cut || r.failed) {
+        out << "  " << r.scene << " " << r.setting << " 1/" << std::lround(1 / r.dt) << ": " << r.note << "\n";
+        ++n;
+      }
+    for (const std::string& k : s.skipped) {
+      out << "  " << s.scene.id << " " << k << "\n";
+      ++n;
+    }
+  }
+  if (n == 0) out << "  nothing\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  tb::BenchOptions o;
+  bool list = false;
+  CLI::App app{"tumble-bench: wall time per simulated second against error, tumble and its peers"};
+  app.add_flag("--quick", o.quick, "smoke test: dt 1/60 and 1/240, short durations, one run per point");
+  app.add_option("--scenes", o.scenes, "scene ids (S1 S2a S2b S3 S4 S5 S6_100 S6_300 S6_1000 S7 S8 S8ccd)")->delimiter(',');
+  app.add_option("--settings", o.settings, "engine settings to run (see --list); named ones run on every scene")->delimiter(',');
+  app.add_option("--hz", o.hz, "steps per second to sweep (default 60,120,240,480,1000)")->delimiter(',');
+  app.add_option("--reps", o.run.reps, "fresh runs per point; the median time is reported")->check(CLI::Range(1, 100));
+  app.add_option("--cap", o.run.cap_s, "wall s of stepping after which a run stops early (reported as cut)")->check(CLI::PositiveNumber);
+  app.add_option("--pile-duration", o.pile_duration_s, "simulated s of the piles (SCENES.md: 5)")->check(CLI::PositiveNumber);
+  app.add_option("--sc-horizon", o.run.sc_horizon_s, "horizon (s) of the piles' self-consistency error")->check(CLI::PositiveNumber);
+  app.add_option("-o,--out", o.out_dir, "folder for results.csv and the plots");
+  app.add_flag("--list", list, "list the engine settings in this build and exit");
+  CLI11_PARSE(app, argc, argv);
+  if (o.quick) tb::applyQuick(o);
+
+  const std::vector<tb::EngineSetting> settings = tb::availableSettings();
+  if (list) {
+    for (const tb::EngineSetting& s : settings) std::cout << s.name << "\n";
+    return 0;
+  }
+  try {
+    std::filesystem::create_directories(o.out_dir);
+    std::vector<tb::SceneResults> all;
+    for (const tb::BenchScene& scene : tb::plannedScenes(o)) {
+      all.push_back(runScene(scene, settings, o));
+      tb::printTable(std::cout, all.back());
+      std::cout.flush();
+      tb::writePlot(o.out_dir / (scene.id + ".png"), all.back());
+      tb::writeCsv(o.out_dir / "results.csv", all);   // rewritten after each scene: partial runs keep data
+    }
+    printCuts(std::cout, all);
+    std::cout << "\nwrote " << (o.out_dir / "results.csv").string() << " and a plot per scene in "
+              << o.out_dir.string() << "/\n";
+  } catch (const std::exception& e) {
+    std::cerr << "tumble-bench: " << e.what() << "\n";
+    return 64;
+  }
+  return 0;
+}

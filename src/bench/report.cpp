@@ -1,0 +1,83 @@
+#include "bench/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "bench/metrics.h"
+#include "bench/scene_plot.h"
+#include "io/png_file.h"
+
+namespace tumble::bench {
+namespace {
+
+std::string fmt(double x) {
+  char buf[32];
+  if (std::isnan(x)) return "-";
+  if (x == std::round(x) && std::abs(x) < 1e6) std::snprintf(buf, sizeof buf, "%.0f", x);
+  else std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+std::string hz(double dt) { return std::to_string(std::lround(1 / dt)); }
+
+std::string csvField(std::string s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string pad(const std::string& s, std::size_t w) { return s.size() >= w ? s + " " : s + std::string(w - s.size(), ' '); }
+
+}  // namespace
+
+void printTable(std::ostream& out, const SceneResults& s) {
+  const bool pile = s.scene.kind == SceneKind::Pile;
+  out << "\n" << s.scene.id << " " << s.scene.title << " (" << s.scene.duration << " s; headline error "
+      << headlineMetric(s.scene.kind) << ")\n";
+  std::vector<std::string> names;
+  for (const RunResult& r : s.rows)
+    for (const Metric& m : r.metrics)
+      if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+  std::string head = pad("setting", 20) + pad("Hz", 6) + pad("wall/sim", 10) + pad("reps", 5);
+  if (pile) head += pad("MB", 6);
+  for (const std::string& n : names) head += pad(n, std::max<std::size_t>(10, n.size() + 1));
+  out << head << "note\n";
+  for (const RunResult& r : s.rows) {
+    std::string line = pad(r.setting, 20) + pad(hz(r.dt), 6) + pad(fmt(r.wall_per_sim), 10) + pad(std::to_string(r.reps), 5);
+    if (pile) line += pad(fmt(r.peak_rss_mb), 6);
+    for (const std::string& n : names) line += pad(fmt(metricValue(r, n)), std::max<std::size_t>(10, n.size() + 1));
+    out << line << r.note << "\n";
+  }
+  for (const std::string& k : s.skipped) out << "  skipped " << k << "\n";
+}
+
+void writeCsv(const std::filesystem::path& file, const std::vector<SceneResults>& all) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("tumble-bench: cannot write " + file.string());
+  out << "scene,setting,engine,dt_s,hz,wall_s_per_sim_s,reps,simulated_s,cut,peak_rss_mb,failed,metric,value,headline,note\n";
+  char buf[64];
+  auto num = [&](double x) { std::snprintf(buf, sizeof buf, "%.9g", x); return std::string(buf); };
+  for (const SceneResults& s : all) {
+    const std::string headline = headlineMetric(s.scene.kind);
+    for (const RunResult& r : s.rows) {
+      const std::string common = r.scene + "," + r.setting + "," + r.engine + "," + num(r.dt) + "," + hz(r.dt) + "," +
+                                 num(r.wall_per_sim) + "," + std::to_string(r.reps) + "," + num(r.simulated_s) + "," +
+                                 (r.cut ? "1" : "0") + "," + num(r.peak_rss_mb) + "," + (r.failed ? "1" : "0") + ",";
+      if (r.metrics.empty()) out << common << ",,," << csvField(r.note) << "\n";
+      for (const Metric& m : r.metrics)
+        out << common << m.name << "," << num(m.value) << "," << (m.name == headline ? "1" : "0") << ","
+            << csvField(r.note) << "\n";
+    }
+  }
+  if (!out.flush()) throw std::runtime_error("tumble-bench: cannot write " + file.string());
+}
+
+void writePlot(const std::filesystem::path& file, const SceneResults& s) {
+  writePng(file, plotScene(s.scene.id + " " + s.scene.title, headlineMetric(s.scene.kind), s.rows));
+}
+
+}  // namespace tumble::bench
