@@ -1,74 +1,17 @@
 #include "dynamics/contact_solver.h"
 
 #include <cmath>
+#include <limits>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_jacobian.h"
-#include "dynamics/lcp/dantzig_solver.h"
+#include "dynamics/contact_lcp.h"
+#include "dynamics/impulse_propagation.h"
 
 namespace tumble {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 bool touching(const Contact& c, const ContactSettings& s) { return c.depth >= -s.tolerance_m; }
-
-double normalVelocity(const World& world, const Contact& c) {
-  return rowVelocity(world, rowAlong(world, c, c.normal));
-}
-
-// The rows of an LCP over a set of contacts: one normal row per contact, followed (when the
-// contact has friction) by two tangent rows bounded by +-mu times that normal variable.
-struct ContactLcp {
-  std::vector<ContactRow> rows;
-  lcp::LcpProblem problem;
-  std::vector<int> normal_row;   // per contact: its normal row
-};
-
-// `friction[i]` says whether contact i gets friction rows.
-ContactLcp buildRows(const World& world, const std::vector<const Contact*>& set,
-                     const std::vector<char>& friction) {
-  ContactLcp out;
-  std::vector<int> friction_of;
-  std::vector<double> mu;
-  for (std::size_t i = 0; i < set.size(); ++i) {
-    const Contact* c = set[i];
-    out.normal_row.push_back(static_cast<int>(out.rows.size()));
-    out.rows.push_back(rowAlong(world, *c, c->normal));
-    friction_of.push_back(-1);
-    mu.push_back(0);
-    if (friction[i] && c->friction > 0) {
-      Eigen::Vector3d t1, t2;
-      tangentsOf(c->normal, t1, t2);
-      for (const Eigen::Vector3d& t : {t1, t2}) {
-        out.rows.push_back(rowAlong(world, *c, t));
-        friction_of.push_back(out.normal_row.back());
-        mu.push_back(c->friction);
-      }
-    }
-  }
-  const int n = static_cast<int>(out.rows.size());
-  out.problem.A = delassus(world, out.rows);
-  out.problem.b = Eigen::VectorXd::Zero(n);
-  out.problem.lo = Eigen::VectorXd::Zero(n);
-  out.problem.hi = Eigen::VectorXd::Constant(n, kInf);
-  out.problem.friction_of = friction_of;
-  out.problem.mu = Eigen::Map<Eigen::VectorXd>(mu.data(), n);
-  return out;
-}
-
-lcp::LcpResult solve(const lcp::LcpProblem& p, ContactSolveStats& stats) {
-  // Redundant contacts (four corners of a face) leave the split of the normal force between them
-  // free, so the friction bounds +-mu f_n need not settle to the last bit between passes: settle to
-  // 1e-9 of the largest bound (far below any force that moves a body measurably).
-  lcp::DantzigSettings settings;
-  settings.friction_tolerance = 1e-9;
-  settings.max_friction_passes = 12;
-  lcp::LcpResult r = lcp::solveDantzig(p, settings);
-  stats.pivots += r.iterations;
-  if (r.status != lcp::LcpStatus::Solved) ++stats.failures;
-  return r;
-}
 
 }  // namespace
 
@@ -80,36 +23,11 @@ ContactClass classify(const World& world, const Contact& c, const ContactSetting
   return ContactClass::Resting;
 }
 
-namespace {
-
-// Solves Newton's law for one island of touching contacts (see resolveCollisions).
-void collideIsland(World& world, const std::vector<const Contact*>& set, const ContactSettings& s,
-                   double min_bounce_speed, ContactSolveStats& stats) {
-  std::vector<double> vn, e;
-  bool any = false;
-  for (const Contact* c : set) {
-    vn.push_back(normalVelocity(world, *c));
-    bool colliding = vn.back() < -s.resting_speed_m_s;
-    any |= colliding;
-    stats.colliding += colliding;
-    e.push_back(colliding && vn.back() < -min_bounce_speed ? c->restitution : 0.0);
-  }
-  if (!any) return;
-  ContactLcp lcp = buildRows(world, set, std::vector<char>(set.size(), 1));
-  for (std::size_t r = 0; r < lcp.rows.size(); ++r) lcp.problem.b[r] = rowVelocity(world, lcp.rows[r]);
-  for (std::size_t i = 0; i < set.size(); ++i) lcp.problem.b[lcp.normal_row[i]] = (1 + e[i]) * vn[i];
-  lcp::LcpResult r = solve(lcp.problem, stats);
-  applyAlongRows(world, lcp.rows, r.f);
-}
-
-}  // namespace
-
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
                        double min_bounce_speed, ContactSolveStats& stats) {
-  // Newton's law per contact: v+ >= -e v-, j >= 0, (v+ + e v-) j = 0. Written as an LCP in the
-  // impulses j: w = A j + (1 + e) v-. Touching contacts that rest take part with e = 0, so an
-  // impact is passed on through what it presses against. Friction rows ask for zero tangential
-  // velocity after the impact, with |j_t| <= mu j_n (Coulomb on impulses).
+  // Every touching contact takes part, resting ones too: an impact is passed on through what it
+  // presses against. Islands are independent; within one, impulse_propagation.h says how the
+  // impact travels pair by pair while each pair's points are solved together.
   std::vector<const Contact*> set;
   bool any = false;
   for (const Contact& c : contacts) {
@@ -120,7 +38,7 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
   }
   if (!any) return false;
   for (const std::vector<const Contact*>& island : splitIntoIslands(world, set))
-    collideIsland(world, island, s, min_bounce_speed, stats);
+    propagateImpulses(world, island, s, min_bounce_speed, stats);
   return true;
 }
 
@@ -182,6 +100,19 @@ Eigen::VectorXd freeAccelerations(const World& world, const ContactLcp& lcp,
   return b;
 }
 
+// The fallback when dynamic friction cannot be found by iteration: every contact gets boxed
+// friction rows (|f_t| <= mu f_n, asking for zero tangential acceleration), as ODE and Bullet treat
+// all contacts. Always bounded (A is positive semi-definite); a sliding contact is then held by
+// at most mu f_n for this sub-step instead of being slowed by exactly mu f_n. Counted.
+void restWithBoxedFriction(const World& world, const std::vector<const Contact*>& resting,
+                           std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+  ++stats.friction_fallbacks;
+  ContactLcp lcp = buildContactLcp(world, resting, std::vector<char>(resting.size(), 1));
+  lcp.problem.b = freeAccelerations(world, lcp, wrenches);
+  lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
+  addForces(world, lcp.rows, r.f, wrenches);
+}
+
 void restIsland(const World& world, const std::vector<const Contact*>& resting, const ContactSettings& s,
                 std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
   // Static friction joins the LCP (tangential acceleration 0 while |f_t| <= mu f_n). A sliding
@@ -199,7 +130,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
       slide_contact.push_back(static_cast<int>(i));
     }
   }
-  ContactLcp lcp = buildRows(world, resting, sticks);
+  ContactLcp lcp = buildContactLcp(world, resting, sticks);
   Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches);
   const int n = static_cast<int>(lcp.rows.size()), m = static_cast<int>(slide_rows.size());
   Eigen::MatrixXd coupling;   // J_lcp M^-1 J_slide^T: what dynamic friction does to each row
@@ -210,16 +141,26 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   }
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m);   // dynamic friction magnitudes
   lcp.problem.b = b;
-  lcp::LcpResult r = solve(lcp.problem, stats);
+  lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
+  // The iteration contracts when dynamic friction changes the normal forces less than it is
+  // changed by them; where a sliding body is wedged (friction pressing it into its supports) the
+  // gain exceeds 1 and the forces would grow geometrically (to 1e12 N within 8 passes, seen in the
+  // pile). A change that grows is that case: give up the fixed point for this island.
+  double last_change = std::numeric_limits<double>::infinity();
   for (int pass = 0; pass < 8 && m > 0; ++pass) {
     Eigen::VectorXd next(m);
     for (int k = 0; k < m; ++k)
       next[k] = resting[slide_contact[k]]->friction * std::max(0.0, r.f[lcp.normal_row[slide_contact[k]]]);
     double change = (next - g).cwiseAbs().maxCoeff();
+    if (pass > 0 && change > last_change) {
+      restWithBoxedFriction(world, resting, wrenches, stats);
+      return;
+    }
+    last_change = change;
     g = next;
     if (change <= 1e-12 * (1 + g.cwiseAbs().maxCoeff())) break;
     lcp.problem.b = b + coupling * g;
-    r = solve(lcp.problem, stats);
+    r = solveContactLcp(lcp.problem, stats);
   }
   addForces(world, lcp.rows, r.f, wrenches);
   if (m > 0) addForces(world, slide_rows, g, wrenches);

@@ -1,6 +1,6 @@
 // Contact pipeline steps 4-6 (DESIGN.md): classify contacts by their normal relative velocity,
-// resolve colliding ones with impulses (Newton's restitution law, all at once as an LCP on
-// impulses), and find the forces of resting ones (Baraff's LCP a = A f + b, a >= 0, f >= 0,
+// resolve colliding ones with impulses (Newton's restitution law, propagated pair by pair with
+// each pair's points solved together: impulse_propagation.h), and find the forces of resting ones (Baraff's LCP a = A f + b, a >= 0, f >= 0,
 // a^T f = 0) with Coulomb friction.
 #pragma once
 
@@ -21,11 +21,12 @@ struct ContactSolveStats {
   int colliding = 0, resting = 0;   // contacts of each class seen
   int pivots = 0;                   // LCP pivots spent
   int failures = 0;                 // LCP solves that did not converge (result used anyway)
+  int friction_fallbacks = 0;       // islands whose dynamic friction diverged (boxed friction used)
 };
 
-// Applies restitution impulses to every colliding contact, together with the touching contacts
-// around them (so a flat face landing on 4 corners, or a stack being hit, is solved as one
-// system). Returns true if any contact was colliding.
+// Applies restitution impulses to every colliding contact and passes them on through the touching
+// contacts around them (a flat face landing on 4 corners is one impact, solved at once; a chain of
+// balls passes it on ball by ball). Returns true if any contact was colliding.
 // Impacts slower than `min_bounce_speed` (m/s) get no restitution: see Pipeline for why.
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
                        const ContactSettings& settings, double min_bounce_speed,

@@ -1,0 +1,47 @@
+// Colliding contacts (DESIGN.md, contact pipeline step 5): Newton's restitution impulses that
+// propagate through chains of contact, pair by pair, while the points of one body pair are always
+// solved together.
+//
+// Why both. Newton's law can be imposed on all the contacts of an island at once (one LCP in the
+// impulses) or on one body pair at a time, in sequence. Each is right for one of two cases that
+// pull in opposite directions:
+//  - a flat cube landing on four corners is ONE impact between ONE pair of bodies. Its points must
+//    be solved together: the first corner solved alone would spin the cube.
+//  - Newton's cradle is a CHAIN of impacts between DIFFERENT pairs. In the real cradle the shock
+//    passes from ball to ball, one impact after another (with gaps of 1e-6 m back-stepping finds
+//    them as four separate events). Solving all pairs at once gives [-0.6, 0.4, 0.4, 0.4, 0.4] m/s:
+//    momentum and energy conserved, and wrong; one pair after another gives [0, 0, 0, 0, 1].
+// So the unit of simultaneity is the body pair: its manifold is one impact. Across pairs, the pair
+// approaching fastest is solved first; its impulse changes the velocities its neighbours see, and
+// the next pair that now approaches is solved next, until no contact of the island approaches
+// (Guendelman, Bridson and Fedkiw 2003 iterate over pairs in the same spirit).
+//
+// Termination: the first rounds use each contact's restitution; after a few rounds per pair
+// (bodies pinched between others can trade an elastic impulse back and forth for ever) the rounds
+// are inelastic, which dissipates, and if even that has not settled the island after a cap, one
+// simultaneous inelastic solve over the whole island leaves no contact approaching.
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/contact_solver.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+// Resolves one island of touching contacts (bodies that touch, directly or through others) so that
+// afterwards no contact approaches faster than settings.resting_speed_m_s. Impacts slower than
+// `min_bounce_speed` (m/s) get no restitution (see Pipeline).
+void propagateImpulses(World& world, const std::vector<const Contact*>& island,
+                       const ContactSettings& settings, double min_bounce_speed,
+                       ContactSolveStats& stats);
+
+// One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every
+// normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
+// the impulses; e is scaled by `restitution_scale` in [0, 1]. Never adds kinetic energy (see the
+// .cpp: Newton's law with friction can, Kane's paradox).
+void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
+                   double restitution_scale, ContactSolveStats& stats);
+
+}  // namespace tumble
