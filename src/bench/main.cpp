@@ -37,6 +37,10 @@ tb::SceneResults runScene(const tb::BenchScene& scene, const std::vector<tb::Eng
         run.head_s = r.simulated_s;
         run.sc_horizon_s = std::min(run.sc_horizon_s, run.head_s);
       }
+      // Likewise a reference run cut short: later engines are self-checked over the same horizon.
+      if (scene.kind == tb::SceneKind::Pile)
+        for (const tb::Metric& m : r.metrics)
+          if (m.name == "sc_horizon_s" && m.value > 0) run.sc_horizon_s = std::min(run.sc_horizon_s, m.value);
       out.rows.push_back(std::move(r));
     }
   }

@@ -31,11 +31,15 @@ double dampingRatioFor(double e) {
 std::string mjcfOf(const BenchScene& scene, double dt, const MujocoOptions& opt) {
   const std::size_t n = scene.bodies.size();
   // 2.2.2 sizes its buffers from these by hand (results-peers.md: 12 N + 40 contacts, 4 rows each).
-  // It also keeps a dense njmax x njmax matrix (efc_AR) in one buffer whose size must fit an int:
-  // 4 (12 N + 40) rows no longer fit above ~220 boxes ("could not create mjData"), so the rows are
-  // capped at 11000 (0.97 GB for that matrix). A pile that needs more rows drops constraints,
-  // which MuJoCo counts as a warning and the report marks INVALID.
-  const std::size_t nconmax = 12 * n + 40, njmax = std::min<std::size_t>(4 * nconmax, 11000);
+  // Its mjData is one buffer whose size must fit an int, and it holds a dense njmax x njmax matrix
+  // (efc_AR, 8 bytes an entry) and njmax x nv Jacobians (J and JT with their column indices, about
+  // 24 bytes an entry): 4 (12 N + 40) rows no longer fit above ~220 boxes ("could not create
+  // mjData"). So the rows are capped where those take 1.6 GB: 8 r^2 + 24 nv r = 1.6e9. A pile
+  // that needs more rows drops constraints, which MuJoCo counts and the report marks INVALID.
+  const double nv = 6.0 * static_cast<double>(n), bytes = 1.6e9;
+  const double row_cap = (-24 * nv + std::sqrt(576 * nv * nv + 32 * bytes)) / 16;
+  const std::size_t nconmax = 12 * n + 40;
+  const std::size_t njmax = std::min<std::size_t>(4 * nconmax, static_cast<std::size_t>(row_cap));
   std::ostringstream x;
   x.precision(17);
   x << "<mujoco model=\"" << scene.id << "\">\n";
