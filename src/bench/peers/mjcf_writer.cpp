@@ -31,13 +31,13 @@ double dampingRatioFor(double e) {
 std::string mjcfOf(const BenchScene& scene, double dt, const MujocoOptions& opt) {
   const std::size_t n = scene.bodies.size();
   // 2.2.2 sizes its buffers from these by hand (results-peers.md: 12 N + 40 contacts, 4 rows each).
-  // Its mjData is one buffer whose size must fit an int, and it holds a dense njmax x njmax matrix
-  // (efc_AR, 8 bytes an entry) and njmax x nv Jacobians (J and JT with their column indices, about
-  // 24 bytes an entry): 4 (12 N + 40) rows no longer fit above ~220 boxes ("could not create
-  // mjData"). So the rows are capped where those take 1.6 GB: 8 r^2 + 24 nv r = 1.6e9. A pile
-  // that needs more rows drops constraints, which MuJoCo counts and the report marks INVALID.
-  const double nv = 6.0 * static_cast<double>(n), bytes = 1.6e9;
-  const double row_cap = (-24 * nv + std::sqrt(576 * nv * nv + 32 * bytes)) / 16;
+  // Its mjData is one buffer whose size must fit an int (2.1 GB), and it grows with njmax^2 (dense
+  // constraint matrices) and njmax nv (Jacobians): 4 (12 N + 40) rows no longer fit above ~220
+  // boxes ("could not create mjData"). Measured here: 11000 rows fit at N = 300 and 11697 do not;
+  // 16 r^2 + 16 nv r <= 1.8e9 bytes stays inside both. A pile that needs more rows drops
+  // constraints, which MuJoCo counts and the report marks INVALID.
+  const double nv = 6.0 * static_cast<double>(n), bytes = 1.8e9;
+  const double row_cap = (-16 * nv + std::sqrt(256 * nv * nv + 64 * bytes)) / 32;
   const std::size_t nconmax = 12 * n + 40;
   const std::size_t njmax = std::min<std::size_t>(4 * nconmax, static_cast<std::size_t>(row_cap));
   std::ostringstream x;
