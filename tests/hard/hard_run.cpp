@@ -14,12 +14,17 @@ Scene loadHardScene(const std::string& name) {
 
 HardRun simulate(const Scene& scene, double seconds, const std::function<bool(const World&)>& on_step) {
   BuiltWorld built = buildWorld(scene);
-  HardRun run{std::move(built.world), {}, 0};
-  Pipeline pipeline(run.world, built.step);
-  const long steps = std::lround(seconds / built.step.dt);
+  return simulate(std::move(built.world), built.step, seconds, on_step);
+}
+
+HardRun simulate(World world, const StepSettings& step, double seconds,
+                 const std::function<bool(const World&)>& on_step) {
+  HardRun run{std::move(world), {}, 0};
+  Pipeline pipeline(run.world, step);
+  const long steps = std::lround(seconds / step.dt);
   for (long k = 1; k <= steps; ++k) {
-    pipeline.step(run.world, built.step);
-    run.world.time = static_cast<double>(k) * built.step.dt;
+    pipeline.step(run.world, step);
+    run.world.time = static_cast<double>(k) * step.dt;
     run.steps = k;
     if (on_step && !on_step(run.world)) break;
   }

@@ -25,6 +25,9 @@ struct HardRun {
 // `on_step` after each (world.time is k dt exactly, as in the Simulator). Stops early when
 // `on_step` returns false.
 HardRun simulate(const Scene& scene, double seconds, const std::function<bool(const World&)>& on_step = {});
+// The same for a world built (and then changed) by the test.
+HardRun simulate(World world, const StepSettings& step, double seconds,
+                 const std::function<bool(const World&)>& on_step = {});
 
 // The body of the world named `name` (the scene's body names are unique).
 const RigidBody& bodyNamed(const World& world, const std::string& name);
