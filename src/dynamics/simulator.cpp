@@ -1,7 +1,5 @@
 #include "dynamics/simulator.h"
 
-#include <cmath>
-
 #include "base/error.h"
 
 namespace tumble {
@@ -11,23 +9,20 @@ BodySample sampleOf(const RigidBody& body) {
 }
 
 Simulator::Simulator(World world, const SimulationPlan& plan)
-    : world_(std::move(world)), plan_(plan), pipeline_(world_, plan.step) {}
+    : world_(std::move(world)), plan_(plan), pipeline_(world_, plan.step), faults_(world_) {}
 
-void Simulator::checkFinite() const {
-  for (const RigidBody& b : world_.bodies) {
-    bool finite = b.x.allFinite() && b.q.coeffs().allFinite() && b.P.allFinite() && b.L.allFinite();
-    if (!finite)
-      throw Error(ExitCode::Software, "numerical failure at t = " + std::to_string(world_.time) +
-                                          " s: body \"" + b.name +
-                                          "\" has a non-finite state; try a smaller dt_s");
-  }
+// A fault stops the run with Error(Software) the step it happens, unless the plan keeps going.
+void Simulator::checkFaults() {
+  std::optional<Fault> fault = faults_.afterStep(world_, pipeline_, steps_);
+  if (fault && !plan_.keep_going)
+    throw Error(ExitCode::Software, fault->describe() + " (--keep-going renders anyway)");
 }
 
 void Simulator::advanceFrame(const std::function<void(const World&)>& on_step) {
   for (int i = 0; i < plan_.steps_per_frame; ++i) {
     pipeline_.step(world_, plan_.step);
     world_.time = static_cast<double>(++steps_) * plan_.step.dt;  // exact, never a running sum
-    checkFinite();
+    checkFaults();
     if (on_step) on_step(world_);
   }
 }

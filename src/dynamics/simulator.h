@@ -4,6 +4,7 @@
 
 #include <functional>
 
+#include "dynamics/fault_check.h"
 #include "dynamics/pipeline.h"
 #include "dynamics/step_settings.h"
 #include "dynamics/trajectory.h"
@@ -15,6 +16,7 @@ struct SimulationPlan {
   StepSettings step;
   int steps_per_frame = 8;
   int frames = 120;            // frame 1 is the initial state at t = 0
+  bool keep_going = false;     // on a numerical fault: count it and go on, instead of stopping
 };
 
 BodySample sampleOf(const RigidBody& body);
@@ -31,13 +33,15 @@ class Simulator {
 
   const World& world() const { return world_; }
   const Pipeline& pipeline() const { return pipeline_; }
+  const FaultCheck& faults() const { return faults_; }
 
  private:
-  void checkFinite() const;
+  void checkFaults();
 
   World world_;
   SimulationPlan plan_;
   Pipeline pipeline_;
+  FaultCheck faults_;
   long steps_ = 0;
 };
 

@@ -1,0 +1,186 @@
+#include "dynamics/fault_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace tumble {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The thinnest width of a piece: the smallest extent of its vertices along one of its face normals.
+double thickness(const ConvexPiece& piece) {
+  double thinnest = kInf;
+  for (const Eigen::Vector3d& n : piece.face_normals) {
+    double lo = kInf, hi = -kInf;
+    for (const Eigen::Vector3d& v : piece.vertices) {
+      lo = std::min(lo, n.dot(v));
+      hi = std::max(hi, n.dot(v));
+    }
+    thinnest = std::min(thinnest, hi - lo);
+  }
+  return thinnest;
+}
+
+double radius(const RigidBody& body) {
+  double r = 0;
+  for (const ConvexPiece& piece : body.pieces)
+    for (const Eigen::Vector3d& v : piece.vertices) r = std::max(r, v.norm());
+  return r;
+}
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+std::string inQuotes(const std::string& name) { return "\"" + name + "\""; }
+
+// Which part of a body's state is not finite, for the message.
+std::string brokenParts(const RigidBody& b) {
+  std::string parts;
+  auto add = [&](bool ok, const char* what) {
+    if (!ok) parts += (parts.empty() ? "" : ", ") + std::string(what);
+  };
+  add(b.x.allFinite(), "position");
+  add(b.q.coeffs().allFinite(), "orientation");
+  add(b.P.allFinite(), "linear momentum");
+  add(b.L.allFinite(), "angular momentum");
+  return parts;
+}
+
+const char* kKindNames[] = {"non-finite state", "runaway energy", "deep penetration"};
+
+}  // namespace
+
+std::string Fault::describe() const {
+  return "numerical failure at t = " + number(time) + " s (step " + std::to_string(step) +
+         (stages.empty() ? "" : "; stages run: " + stages) + "): " + detail;
+}
+
+FaultCheck::FaultCheck(const World& world, FaultSettings settings)
+    : settings_(settings), gravity_(world.gravity) {
+  double scale = 0;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& b = world.bodies[i];
+    start_x_.push_back(b.x);
+    double thinnest = kInf;
+    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, thickness(piece));
+    thinnest_.push_back(thinnest);
+    start_energy_.push_back(b.is_static ? 0 : b.kineticEnergy());
+    start_total_ += start_energy_.back();
+    if (!b.is_static) scale += b.kineticEnergy() + b.mass * gravity_.norm() * radius(b);
+  }
+  // The last term only keeps the limit above rounding when nothing moves and nothing falls.
+  energy_limit_ = settings_.energy_growth * scale + 1e-9 * (1 + scale);
+}
+
+double FaultCheck::energyOf(const RigidBody& body, int index) const {
+  if (body.is_static) return 0;
+  // Potential energy -m g.(x - x0): zero at the start, so each body's energy starts at its KE.
+  return body.kineticEnergy() - body.mass * gravity_.dot(body.x - start_x_[index]);
+}
+
+std::optional<Fault> FaultCheck::nonFinite(const World& world) const {
+  Fault f;
+  for (const RigidBody& b : world.bodies) {
+    std::string parts = brokenParts(b);
+    if (parts.empty()) continue;
+    if (f.bodies.empty()) f.detail = "body " + inQuotes(b.name) + " has a non-finite " + parts;
+    f.bodies.push_back(b.name);
+  }
+  if (f.bodies.empty()) return std::nullopt;
+  // A NaN spreads through contacts within a step: name a few of the others too.
+  for (std::size_t i = 1; i < f.bodies.size() && i <= 3; ++i)
+    f.detail += (i == 1 ? " (also " : ", ") + inQuotes(f.bodies[i]);
+  if (f.bodies.size() > 4) f.detail += " and " + std::to_string(f.bodies.size() - 4) + " more";
+  if (f.bodies.size() > 1) f.detail += ")";
+  f.kind = Fault::Kind::NonFinite;
+  f.detail += "; try a smaller dt_s";
+  return f;
+}
+
+std::optional<Fault> FaultCheck::runawayEnergy(const World& world) const {
+  double total = 0, largest_gain = -kInf;
+  int gainer = -1;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    double e = energyOf(world.bodies[i], int(i));
+    total += e;
+    if (e - start_energy_[i] > largest_gain) {
+      largest_gain = e - start_energy_[i];
+      gainer = int(i);
+    }
+  }
+  if (total - start_total_ <= energy_limit_) return std::nullopt;
+  Fault f;
+  f.kind = Fault::Kind::RunawayEnergy;
+  f.bodies.push_back(world.bodies[gainer].name);
+  f.detail = "runaway energy: the total rose from " + number(start_total_) + " J to " + number(total) +
+             " J (limit " + number(start_total_ + energy_limit_) + " J); body " +
+             inQuotes(world.bodies[gainer].name) + " gained the most (" + number(largest_gain) +
+             " J); try a smaller dt_s or lower restitution";
+  return f;
+}
+
+std::optional<Fault> FaultCheck::deepPenetration(const World& world,
+                                                 const std::vector<Contact>& contacts) const {
+  const Contact* worst = nullptr;
+  double worst_share = settings_.depth_share, limit = 0;
+  for (const Contact& c : contacts) {
+    double thinner = std::min(thinnest_[c.a], thinnest_[c.b]);
+    if (!std::isfinite(thinner) || c.depth <= 0) continue;
+    if (c.depth / thinner > worst_share) {
+      worst = &c;
+      worst_share = c.depth / thinner;
+      limit = settings_.depth_share * thinner;
+    }
+  }
+  if (!worst) return std::nullopt;
+  Fault f;
+  f.kind = Fault::Kind::DeepPenetration;
+  f.bodies = {world.bodies[worst->a].name, world.bodies[worst->b].name};
+  f.detail = "bodies " + inQuotes(f.bodies[0]) + " and " + inQuotes(f.bodies[1]) + " overlap by " +
+             number(worst->depth) + " m (limit " + number(limit) +
+             " m, half the thinner piece); try a smaller dt_s";
+  return f;
+}
+
+// A stage ran in the last step when its timer moved. The pipeline checks nothing between its
+// stages, so this is as close as a fault can be pinned without a hook inside the step.
+std::string FaultCheck::stagesRun(const std::vector<StageTime>& profile) {
+  stage_seconds_.resize(profile.size(), 0);
+  std::string ran;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    if (profile[i].seconds != stage_seconds_[i]) ran += (ran.empty() ? "" : ", ") + profile[i].name;
+    stage_seconds_[i] = profile[i].seconds;
+  }
+  return ran;
+}
+
+std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& pipeline, long step) {
+  std::string stages = stagesRun(pipeline.profile());
+  std::optional<Fault> f = nonFinite(world);
+  if (!f) f = runawayEnergy(world);
+  if (!f) f = deepPenetration(world, pipeline.contacts());
+  if (!f) return std::nullopt;
+  f->time = world.time;
+  f->step = step;
+  f->stages = stages;
+  ++counts_[static_cast<int>(f->kind)];
+  if (!first_) first_ = f;
+  return f;
+}
+
+std::string FaultCheck::summary() const {
+  if (total() == 0) return "";
+  std::string out = std::to_string(total()) + (total() == 1 ? " step" : " steps") + " with numerical faults:";
+  for (int k = 0; k < 3; ++k)
+    if (counts_[k] > 0) out += " " + std::to_string(counts_[k]) + " " + kKindNames[k] + ",";
+  out.back() = ';';
+  return out + " the first: " + first_->describe();
+}
+
+}  // namespace tumble

@@ -1,0 +1,78 @@
+// Numerical faults at run time (the third tier of errors, STYLE.md §5): a NaN or infinite state,
+// runaway energy, or penetration beyond a limit. Checked after every step, so a fault is reported
+// the step it happens, with the bodies, the time and the stages that ran in that step, instead of
+// being rendered as garbage. The simulator stops on the first fault unless told to keep going;
+// either way every fault is counted, for the closing summary.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/pipeline.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+struct FaultSettings {
+  // Runaway energy: the world's total energy (kinetic + gravitational) may exceed its start value
+  // by this share of the energy scale, KE0 + sum m |g| r (r: a body's bounding radius). A passive
+  // system (restitution <= 1, constant gravity, static ground) never gains energy; the slack lets
+  // integration error and position correction through, while an impulse that adds half again the
+  // starting kinetic energy, or lifts every body by half its size, is caught.
+  double energy_growth = 0.5;
+  // Penetration: a contact deeper than this share of the thinner of the two bodies' thinnest
+  // pieces. The tunnelling bound keeps a sub-step's closing below a quarter of the thinnest piece,
+  // so a healthy run stays well under a half.
+  double depth_share = 0.5;
+};
+
+struct Fault {
+  enum class Kind { NonFinite, RunawayEnergy, DeepPenetration };
+  Kind kind = Kind::NonFinite;
+  double time = 0;                   // s: the end of the step where it was found
+  long step = 0;                     // 1-based step index
+  std::string stages;                // the stages that ran in that step, in order
+  std::vector<std::string> bodies;   // the bodies concerned
+  std::string detail;                // what was seen, with numbers
+
+  // One line: "numerical failure at t = 1.25 s (step 300; stages detect, collide, ...): ...".
+  std::string describe() const;
+};
+
+class FaultCheck {
+ public:
+  explicit FaultCheck(const World& world, FaultSettings settings = {});
+
+  // The first fault in the world after step `step` (NaN first: energies of a NaN state mean
+  // nothing), counting it. The pipeline gives the contacts found at the end of the step and,
+  // through its stage timers, which stages ran in it.
+  std::optional<Fault> afterStep(const World& world, const Pipeline& pipeline, long step);
+
+  long count(Fault::Kind kind) const { return counts_[static_cast<int>(kind)]; }
+  long total() const { return counts_[0] + counts_[1] + counts_[2]; }
+  const std::optional<Fault>& first() const { return first_; }
+  // "3 faults: 2 runaway energy (first at t = ...), ..."; empty when there were none.
+  std::string summary() const;
+
+ private:
+  std::optional<Fault> nonFinite(const World& world) const;
+  std::optional<Fault> runawayEnergy(const World& world) const;
+  std::optional<Fault> deepPenetration(const World& world, const std::vector<Contact>& contacts) const;
+  double energyOf(const RigidBody& body, int index) const;
+  std::string stagesRun(const std::vector<StageTime>& profile);
+
+  FaultSettings settings_;
+  std::vector<Eigen::Vector3d> start_x_;   // m: each body's start, the zero of its potential energy
+  std::vector<double> start_energy_;       // J: per body
+  double energy_limit_ = 0;                // J: above the start total
+  double start_total_ = 0;                 // J
+  std::vector<double> thinnest_;           // m: each body's thinnest piece (inf for planes)
+  Eigen::Vector3d gravity_;
+  std::vector<double> stage_seconds_;      // s: the stage timers after the previous step
+  long counts_[3] = {0, 0, 0};
+  std::optional<Fault> first_;
+};
+
+}  // namespace tumble
