@@ -9,8 +9,8 @@
 namespace tumble {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const Range kPositive{0, kInf, true, false};
+// m: the sizes a double-precision contact solver resolves; meshes are held to the same (mesh_import).
+const Range kSize{1e-6, 1e6};
 
 Eigen::Quaterniond eulerExtrinsic(const Eigen::Vector3d& deg, const std::string& order) {
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
@@ -32,6 +32,7 @@ void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& sc
   if (!mesh && !shape)
     in.fail("", "a body needs \"mesh\" (a file path) or \"shape\" (\"box\", \"sphere\" or \"plane\")");
   if (mesh) {
+    checkPathText(in, "mesh", *mesh);
     body.shape = ShapeKind::Mesh;
     body.mesh = (scene_dir / *mesh).lexically_normal();
     body.mesh_location = in.locationOf("mesh");
@@ -43,13 +44,13 @@ void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& sc
         throw Error(ExitCode::MissingInput, e.what());
       }
     }
-    body.mesh_scale = in.number("scale", 1, kPositive);
+    body.mesh_scale = in.number("scale", 1, {0, 1e6, true, false});
   } else if (*shape == "box") {
     body.shape = ShapeKind::Box;
-    body.box_size_m = in.vector3("size_m", body.box_size_m, {0, 1e6, true, false});
+    body.box_size_m = in.vector3("size_m", body.box_size_m, kSize);
   } else if (*shape == "sphere") {
     body.shape = ShapeKind::Sphere;
-    body.sphere_radius_m = in.number("radius_m", body.sphere_radius_m, {0, 1e6, true, false});
+    body.sphere_radius_m = in.number("radius_m", body.sphere_radius_m, kSize);
     body.sphere_subdivisions = in.integer("subdivisions", body.sphere_subdivisions, 1, 6);
   } else {
     body.shape = ShapeKind::Plane;
@@ -74,13 +75,22 @@ void readMotionAndMass(ObjectReader& in, BodySpec& body) {
   if (body.is_static && (body.velocity_m_s.norm() > 0 || body.angular_velocity_rad_s.norm() > 0))
     in.fail(in.has("velocity_m_s") ? "velocity_m_s" : "angular_velocity_rad_s",
             "a static body cannot have a velocity");
-  body.mass_kg = in.optionalNumber("mass_kg", kPositive);
-  body.density_kg_m3 = in.number("density_kg_m3", body.density_kg_m3, kPositive);
+  // Bounded so that 1/m and 1/I stay far from overflow: a milligram to a billion tonnes, and
+  // densities from a thin gas to well past osmium (22590 kg/m^3).
+  body.mass_kg = in.optionalNumber("mass_kg", {0, 1e12, true, false});
+  body.density_kg_m3 = in.number("density_kg_m3", body.density_kg_m3, {0, 1e6, true, false});
   if (body.mass_kg && in.has("density_kg_m3"))
     in.fail("density_kg_m3", "give either \"mass_kg\" or \"density_kg_m3\", not both");
 }
 
 }  // namespace
+
+void checkPathText(ObjectReader& in, const std::string& key, const std::string& path) {
+  // A NUL ends the path early for the operating system; other control characters are typos at
+  // best. Either way the file opened would not be the one the text shows.
+  for (unsigned char c : path)
+    if (c < 0x20 || c == 0x7f) in.fail(key, "a path cannot contain control characters");
+}
 
 std::string readChoice(ObjectReader& in, const std::string& key, const std::string& fallback,
                        const std::vector<std::string>& choices) {

@@ -22,6 +22,9 @@ Eigen::Quaterniond readOrientation(ObjectReader& in);
 std::string readChoice(ObjectReader& in, const std::string& key, const std::string& fallback,
                        const std::vector<std::string>& choices);
 
+// Refuses control characters (NUL above all) in a path written in the scene.
+void checkPathText(ObjectReader& in, const std::string& key, const std::string& path);
+
 Integrator readIntegrator(ObjectReader& in, const std::string& key, Integrator fallback);
 
 }  // namespace tumble

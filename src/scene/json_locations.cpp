@@ -15,7 +15,12 @@ std::string pointerToken(const std::string& key) {
 }
 
 JsonLocations::JsonLocations(std::string_view text) : text_(text) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text_.size(); ++i)
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
   // The scan never throws: on malformed text it simply stops; nlohmann reports syntax errors.
+  // A UTF-8 byte order mark (some Windows editors write one) is not part of the JSON text.
+  if (text_.substr(0, 3) == "\xEF\xBB\xBF") at_ = 3;
   skipSpace();
   if (at_ < text_.size()) scanValue("");
 }
@@ -46,8 +51,17 @@ void JsonLocations::scanValue(const std::string& pointer) {
   values_.emplace(pointer, at_);
   if (at_ >= text_.size()) return;
   char c = text_[at_];
-  if (c == '{') return scanObject(pointer);
-  if (c == '[') return scanArray(pointer);
+  if (c == '{' || c == '[') {
+    if (depth_ >= kMaxDepth) {
+      if (!tooDeep()) too_deep_at_ = at_;
+      at_ = text_.size();   // stop: nothing deeper is looked at
+      return;
+    }
+    ++depth_;
+    c == '{' ? scanObject(pointer) : scanArray(pointer);
+    --depth_;
+    return;
+  }
   if (c == '"') return skipString();
   // number or literal: runs until a delimiter
   while (at_ < text_.size() && std::string_view(",]} \t\r\n/").find(text_[at_]) == std::string_view::npos)
@@ -63,7 +77,10 @@ void JsonLocations::scanObject(const std::string& pointer) {
     std::string raw(text_.substr(key_at + 1, std::min(at_, text_.size()) - key_at - 2));
     // Keys with escapes are rare in scene files; they keep their raw spelling here.
     std::string child = pointer + "/" + pointerToken(raw);
-    keys_.emplace(child, key_at);
+    if (!keys_.emplace(child, key_at).second && duplicate_.empty()) {
+      duplicate_ = child;
+      keys_[child] = key_at;   // errors about the field point at its repeat
+    }
     skipSpace();
     if (at_ >= text_.size() || text_[at_] != ':') return;
     ++at_;
@@ -98,17 +115,19 @@ TextPosition JsonLocations::find(const std::string& pointer, bool key) const {
   }
 }
 
+std::size_t JsonLocations::firstValueSpelled(std::string_view spelling) const {
+  std::size_t first = std::string_view::npos;
+  for (const auto& [pointer, at] : values_)
+    if (at < first && text_.substr(at, spelling.size()) == spelling) first = at;
+  return first;
+}
+
 TextPosition JsonLocations::positionOf(std::size_t offset) const {
-  TextPosition pos{1, 1};
-  for (std::size_t i = 0; i < offset && i < text_.size(); ++i) {
-    if (text_[i] == '\n') {
-      ++pos.line;
-      pos.column = 1;
-    } else {
-      ++pos.column;
-    }
-  }
-  return pos;
+  // Binary search in the line starts: errors about many keys of a large file stay fast.
+  offset = std::min(offset, text_.size());
+  auto after = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  std::size_t line = static_cast<std::size_t>(after - line_starts_.begin());   // >= 1: starts hold 0
+  return {static_cast<int>(line), static_cast<int>(offset - line_starts_[line - 1]) + 1};
 }
 
 }  // namespace tumble

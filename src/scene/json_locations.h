@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tumble {
 
@@ -24,6 +25,19 @@ class JsonLocations {
   // Line and column of a byte offset into the text.
   TextPosition positionOf(std::size_t offset) const;
 
+  // Byte offset of the first value whose text starts with `spelling` (npos if none): where a
+  // number nlohmann could not hold ("1e999") was written.
+  std::size_t firstValueSpelled(std::string_view spelling) const;
+
+  // Scene files nest a few levels; the scan stops descending at kMaxDepth (so a hostile file
+  // cannot exhaust the stack) and remembers where the first too-deep value starts.
+  static constexpr int kMaxDepth = 100;
+  bool tooDeep() const { return too_deep_at_ != std::string_view::npos; }
+  std::size_t tooDeepAt() const { return too_deep_at_; }
+  // nlohmann keeps the last of repeated keys silently; a scene that sets a field twice is
+  // ambiguous, so the loader refuses it. The pointer of the first repeat ("" if none).
+  const std::string& firstDuplicateKey() const { return duplicate_; }
+
  private:
   void scanValue(const std::string& pointer);
   void scanObject(const std::string& pointer);
@@ -33,6 +47,10 @@ class JsonLocations {
 
   std::string_view text_;
   std::size_t at_ = 0;
+  std::vector<std::size_t> line_starts_;   // byte offset of each line's first character
+  int depth_ = 0;
+  std::size_t too_deep_at_ = std::string_view::npos;
+  std::string duplicate_;
   std::map<std::string, std::size_t> values_, keys_;
 };
 

@@ -13,10 +13,29 @@
 namespace tumble {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Refused before any work: a frame this large or a clip this long is a typo, not a request.
 constexpr int kMaxSide = 8192;
 constexpr int kMaxFrames = 1000000;
+constexpr std::uintmax_t kMaxSceneBytes = 64 << 20;   // 64 MB: a 100000-body pile is ~15 MB
+// Steps in a whole run: 1e8 steps at 1/240 s is 116 hours of simulated time. More is a typo in
+// dt_s or the frame count, and would look like a hang.
+constexpr double kMaxSteps = 1e8;
+
+// The scene's default output comes from a file that may have been written by someone else: it
+// stays inside the working folder, so a scene cannot direct a render (with -y) onto files
+// elsewhere. `-o` on the command line is the user's own choice and may go anywhere.
+void checkSceneOutput(ObjectReader& root, const std::string& output) {
+  if (output.empty()) root.fail("output", "the output path cannot be empty");
+  checkPathText(root, "output", output);
+  std::filesystem::path path(output);
+  if (path.is_absolute())
+    root.fail("output", "\"" + output + "\" is an absolute path; a scene's output stays inside the "
+                        "working folder (give -o to write elsewhere)");
+  for (const auto& part : path.lexically_normal())
+    if (part == "..")
+      root.fail("output", "\"" + output + "\" leaves the working folder; a scene's output stays inside "
+                          "it (give -o to write elsewhere)");
+}
 
 void readRender(ObjectReader& in, RenderSpec& r) {
   r.width = in.integer("width", r.width, 16, kMaxSide);
@@ -36,7 +55,7 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   in.rejectUnknownKeys();
 }
 
-void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps) {
+void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) {
   sim.integrator = readIntegrator(in, "integrator", sim.integrator);
   sim.gravity_m_s2 = in.vector3("gravity_m_s2", sim.gravity_m_s2, {-1e4, 1e4});
   sim.regula_falsi = readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
@@ -56,6 +75,10 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps) {
                         std::to_string(near * fps) + ")");
   }
   if (whole > 100000) in.fail("dt_s", "more than 100000 steps per frame; use a larger step");
+  if (double(whole) * frames > kMaxSteps)
+    in.fail("dt_s", std::to_string(frames) + " frames of " + std::to_string(whole) +
+                        " steps each are more than " + formatNumber(kMaxSteps) +
+                        " steps; use a larger step or fewer frames");
   sim.steps_per_frame = static_cast<int>(whole);
   sim.dt_s = interval / whole;
   in.rejectUnknownKeys();
@@ -130,6 +153,13 @@ std::string readFile(const std::filesystem::path& file) {
     throw Error(ExitCode::MissingInput, file.string() + ": no such scene file");
   if (std::filesystem::is_directory(file, ec))
     throw Error(ExitCode::MissingInput, file.string() + ": is a folder, not a scene file");
+  // A device or a pipe (/dev/zero) would be read forever; a hand-written scene is never this big.
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw Error(ExitCode::MissingInput, file.string() + ": is not a regular file");
+  if (std::filesystem::file_size(file, ec) > kMaxSceneBytes)
+    throw Error(ExitCode::BadInput, file.string() + ": " + std::to_string(std::filesystem::file_size(file, ec) >> 20) +
+                                        " MB is too large for a scene file (at most " +
+                                        std::to_string(kMaxSceneBytes >> 20) + " MB)");
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   if (!(in && text << in.rdbuf()))
@@ -147,8 +177,11 @@ std::string describeJsonError(const nlohmann::json::exception& e, const std::str
     pos = locations.positionOf(parse->byte > 0 ? parse->byte - 1 : 0);
   } else if (std::size_t q = what.find('\''); q != std::string::npos) {
     // "number overflow parsing '1e999'": find the number in the text to say where it is.
+    // The first value spelled so, not the first text: the same digits may sit in a comment.
     std::string token = what.substr(q + 1, what.rfind('\'') - q - 1);
-    if (std::size_t at = text.find(token); at != std::string::npos) pos = locations.positionOf(at);
+    std::size_t at = locations.firstValueSpelled(token);
+    if (at == std::string::npos) at = text.find(token);
+    if (at != std::string::npos) pos = locations.positionOf(at);
   }
   std::size_t colon = what.find(": ", what.find("parse error"));
   std::string detail = colon != std::string::npos && what.find("parse error") != std::string::npos
@@ -166,12 +199,21 @@ Scene loadScene(const std::filesystem::path& file) { return parseScene(readFile(
 Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   JsonLocations locations(text);
   ParseContext ctx{file.string(), &locations};
+  if (locations.tooDeep()) {
+    TextPosition pos = locations.positionOf(locations.tooDeepAt());
+    throw Error(ExitCode::BadInput, file.string() + ":" + std::to_string(pos.line) + ":" +
+                                        std::to_string(pos.column) + ": invalid JSON: nested deeper than " +
+                                        std::to_string(JsonLocations::kMaxDepth) + " levels");
+  }
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::exception& e) {
     throw Error(ExitCode::BadInput, describeJsonError(e, text, locations, file));
   }
+  if (const std::string& twice = locations.firstDuplicateKey(); !twice.empty())
+    failAt(ctx, twice, "the field \"" + twice.substr(twice.rfind('/') + 1) + "\" is given twice in this object",
+           /*at_key=*/true);
   Scene scene;
   scene.file = file;
   scene.name = file.stem().string();
@@ -183,17 +225,17 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
     root.fail("schema_version", "this tumble reads schema version 1, not " +
                                     std::to_string(scene.schema_version));
   if (auto r = root.optionalObject("render")) readRender(*r, scene.render);
-  if (auto s = root.optionalObject("simulation")) readSimulation(*s, scene.simulation, scene.render.fps);
+  if (auto s = root.optionalObject("simulation")) readSimulation(*s, scene.simulation, scene.render.fps, scene.render.frames);
   else {
     nlohmann::json empty = nlohmann::json::object();
     ObjectReader defaults(ctx, empty, "/simulation");
-    readSimulation(defaults, scene.simulation, scene.render.fps);
+    readSimulation(defaults, scene.simulation, scene.render.fps, scene.render.frames);
   }
   if (auto c = root.optionalObject("camera")) readCamera(*c, scene.camera);
   if (const nlohmann::json* lights = root.optionalArray("lights")) readLights(root, *lights, scene.lighting, ctx);
   else scene.lighting.directional.assign(1, DirectionalLightSpec{});
   scene.output = root.optionalString("output");
-  if (scene.output && scene.output->empty()) root.fail("output", "the output path cannot be empty");
+  if (scene.output) checkSceneOutput(root, *scene.output);
   readBodies(root, ctx, scene);
   root.rejectUnknownKeys();
   return scene;

@@ -10,6 +10,17 @@ namespace {
 
 [[noreturn]] void usage(const std::string& message) { throw Error(ExitCode::Usage, message); }
 
+// The loader's bound on a whole run (scene_loader.cpp), checked again after a flag changed it.
+void checkTotalSteps(const Scene& scene, const std::string& flag) {
+  if (scene.render.frames > 1000000)
+    usage(flag + ": " + std::to_string(scene.render.frames) + " frames; at most 1000000");
+  double steps = double(scene.render.frames) * scene.simulation.steps_per_frame;
+  if (steps > 1e8)
+    usage(flag + ": " + std::to_string(scene.render.frames) + " frames of " +
+          std::to_string(scene.simulation.steps_per_frame) +
+          " steps each are more than 100000000 steps; use a larger step or fewer frames");
+}
+
 }  // namespace
 
 void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
@@ -23,6 +34,7 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
   if (whole > 100000) usage(flag + ": more than 100000 steps per frame");
   scene.simulation.steps_per_frame = static_cast<int>(whole);
   scene.simulation.dt_s = interval / whole;
+  checkTotalSteps(scene, flag);
 }
 
 void setFrameRate(Scene& scene, int fps) {
@@ -34,17 +46,20 @@ void setFrameRate(Scene& scene, int fps) {
   long whole = std::max(1L, std::lround(1.0 / fps / dt));
   scene.simulation.steps_per_frame = static_cast<int>(whole);
   scene.simulation.dt_s = 1.0 / fps / whole;
+  checkTotalSteps(scene, "--fps");
 }
 
 void setDuration(Scene& scene, double duration_s) {
   if (!(duration_s > 0) || duration_s * scene.render.fps > 1e6)
     usage("--duration: must be positive and at most 1000000 frames long");
   scene.render.frames = std::max(1, static_cast<int>(std::lround(duration_s * scene.render.fps)));
+  checkTotalSteps(scene, "--duration");
 }
 
 void setFrameCount(Scene& scene, int frames) {
   if (frames < 1 || frames > 1000000) usage("--frame-count: must be in [1, 1000000]");
   scene.render.frames = frames;
+  checkTotalSteps(scene, "--frame-count");
 }
 
 void setSize(Scene& scene, const std::string& size) {
