@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>  // cross products
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -130,6 +131,44 @@ ConvexPiece reindexed(const std::vector<Vector3d>& p, std::vector<Loop> faces) {
   return buildPiece(std::move(vertices), std::move(faces));
 }
 
+// The smallest extent of the hull's vertices along the normals of its largest triangles: an upper
+// bound of its width, exact for a slab, whose two large sides hold the largest triangles. A few
+// normals keep this O(V) on meshes of any size; closed() below catches what it misses.
+double slabWidth(const std::vector<Vector3d>& p, const TriangleHull& h) {
+  std::vector<int> order(h.triangles.size());
+  std::iota(order.begin(), order.end(), 0);
+  const size_t count = std::min<size_t>(order.size(), 16);
+  std::partial_sort(order.begin(), order.begin() + count, order.end(), [&](int a, int b) {
+    return triangleArea(p, h.triangles[a]) > triangleArea(p, h.triangles[b]);
+  });
+  std::vector<int> used;
+  for (const std::array<int, 3>& tri : h.triangles) used.insert(used.end(), tri.begin(), tri.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < count; ++k) {
+    const Vector3d& n = h.normals[order[k]];
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int v : used) {
+      lo = std::min(lo, n.dot(p[v]));
+      hi = std::max(hi, n.dot(p[v]));
+    }
+    thinnest = std::min(thinnest, hi - lo);
+  }
+  return thinnest;
+}
+
+// A closed polyhedron: at least 4 faces, every directed edge walked once and its reverse once.
+bool closed(const std::vector<Loop>& faces) {
+  if (faces.size() < 4) return false;
+  std::map<std::pair<int, int>, int> directed;
+  for (const Loop& f : faces)
+    for (size_t i = 0; i < f.size(); ++i) ++directed[{f[i], f[(i + 1) % f.size()]}];
+  for (const auto& [edge, count] : directed)
+    if (count != 1 || !directed.count({edge.second, edge.first})) return false;
+  return true;
+}
+
 }  // namespace
 
 std::optional<ConvexPiece> convexHull(const std::vector<Eigen::Vector3d>& points, std::string* why) {
@@ -141,8 +180,14 @@ std::optional<ConvexPiece> convexHull(const std::vector<Eigen::Vector3d>& points
   const HullTolerance tol = hullTolerance(points);
   std::optional<TriangleHull> triangles = quickhull(points, tol.plane, why);
   if (!triangles) return std::nullopt;
+  // A cloud thinner than the merge tolerance (found by fuzzing: a 3 km sliver 4e-5 m thick) has
+  // its two sides merged into one face each, and its vertices then meet two faces only and are
+  // dropped: nothing would be left. Such a cloud is flat at the precision the hull promises.
+  if (slabWidth(points, *triangles) <= 2 * tol.merge)
+    return *why = "the points lie within the merge tolerance of a plane (flat)", std::nullopt;
   std::vector<Loop> faces = mergedFaces(points, *triangles, tol.merge);
   dropEdgeVertices(faces, points.size());
+  if (!closed(faces)) return *why = "merging coplanar faces left no closed surface (too thin)", std::nullopt;
   return reindexed(points, std::move(faces));
 }
 

@@ -8,11 +8,13 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "base/error.h"
 #include "geometry/convex_hull.h"
+#include "geometry/mesh_import_checks.h"
 #include "geometry/mesh_convexity.h"
 
 namespace tumble {
@@ -39,23 +41,6 @@ void checkReadable(const std::filesystem::path& file) {
   if (!std::ifstream(file, std::ios::binary)) {
     throw Error(ExitCode::MissingInput, file.string() + ": cannot be read (check its permissions)");
   }
-}
-
-// assimp 5.2 never returns from a PLY file whose header lacks its `end_header` line (a file cut
-// short while being written or copied: seen in our tests), so such a file is refused before
-// assimp sees it. A header longer than 1 MB is not a mesh we want either.
-void refuseTruncatedPly(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line) || line.substr(0, 3) != "ply") return;
-  std::streamoff read = 0;
-  while (std::getline(in, line) && read < (1 << 20)) {
-    if (line.rfind("end_header", 0) == 0) return;
-    read += std::streamoff(line.size()) + 1;
-  }
-  throw Error(ExitCode::BadInput,
-              file.string() + ": the PLY header never ends (no end_header line); is the file "
-                              "truncated?");
 }
 
 // Appends one aiMesh, placed by `to_file`, to a piece's points and triangles.
@@ -115,7 +100,51 @@ std::vector<MeshInstance> readMeshes(const std::filesystem::path& file, double s
   return meshes;
 }
 
+// Pieces outside the sizes a double-precision contact solver resolves are refused: the scene's
+// boxes and spheres have the same bounds, and positions stop at 1e9 m. A wrong unit or scale is the
+// usual cause (millimetres read as metres), so the message points there.
+constexpr double kMinSide = 1e-6, kMaxSide = 1e6, kMaxCoordinate = 1e9;   // m
+
+struct MeshView {
+  const std::string& name;
+  const std::vector<Vector3d>& points;
+};
+
+void checkFiniteAndSize(const MeshView& mesh, const std::string& file) {
+  Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vector3d& p : mesh.points) {
+    if (!p.allFinite()) {
+      throw Error(ExitCode::BadInput,
+                  "mesh '" + mesh.name + "' in " + file + " has a NaN or infinite coordinate");
+    }
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double side = (hi - lo).maxCoeff(), far = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  if (side >= kMinSide && side <= kMaxSide && far <= kMaxCoordinate) return;
+  std::ostringstream msg;
+  msg << "mesh '" << mesh.name << "' in " << file << " is " << side << " m across and reaches " << far
+      << " m from the origin; tumble takes pieces " << kMinSide << " to " << kMaxSide
+      << " m across within " << kMaxCoordinate << " m of the origin (check the file's units and \"scale\")";
+  throw Error(ExitCode::BadInput, msg.str());
+}
+
 }  // namespace
+
+ConvexPiece convexPieceOf(const std::string& mesh_name, const std::vector<Vector3d>& points,
+                          const std::vector<std::array<int, 3>>& triangles, const std::string& file,
+                          std::string* warning) {
+  checkFiniteAndSize(MeshView{mesh_name, points}, file);
+  std::optional<ConvexPiece> hull = convexHull(points, nullptr);
+  if (!hull) {
+    throw Error(ExitCode::BadInput, "mesh '" + mesh_name + "' in " + file +
+                                        " spans no volume (all points coplanar); a convex "
+                                        "piece needs volume");
+  }
+  if (warning && !isConvexMesh(points, triangles, *hull)) *warning = "is not convex; using its convex hull";
+  hull->name = mesh_name;
+  return std::move(*hull);
+}
 
 ImportedPieces importConvexPieces(const std::filesystem::path& file, double scale) {
   const std::string name = file.string();
@@ -125,7 +154,7 @@ ImportedPieces importConvexPieces(const std::filesystem::path& file, double scal
     msg << name << ": scale must be a positive number, got " << scale;
     throw Error(ExitCode::BadInput, msg.str());
   }
-  refuseTruncatedPly(file);
+  refuseFilesAssimpHangsOn(file);
   const std::vector<MeshInstance> meshes = readMeshes(file, scale);
   if (meshes.empty()) {
     throw Error(ExitCode::BadInput,
@@ -135,25 +164,12 @@ ImportedPieces importConvexPieces(const std::filesystem::path& file, double scal
   ImportedPieces out;
   for (size_t k = 0; k < meshes.size(); ++k) {
     const MeshInstance& mesh = meshes[k];
-    for (const Vector3d& p : mesh.points) {
-      if (!p.allFinite()) {
-        throw Error(ExitCode::BadInput,
-                    "mesh '" + mesh.name + "' in " + name + " has a NaN or infinite coordinate");
-      }
-    }
-    std::optional<ConvexPiece> hull = convexHull(mesh.points, nullptr);
-    if (!hull) {
-      throw Error(ExitCode::BadInput, "mesh '" + mesh.name + "' in " + name +
-                                          " spans no volume (all points coplanar); a convex "
-                                          "piece needs volume");
-    }
-    if (!isConvexMesh(mesh.points, mesh.triangles, *hull)) {
+    std::string warning;
+    out.pieces.push_back(convexPieceOf(mesh.name, mesh.points, mesh.triangles, name, &warning));
+    if (!warning.empty()) {
       out.warnings.push_back("mesh '" + mesh.name + "' (" + std::to_string(k + 1) + " of " +
-                             std::to_string(meshes.size()) + ") in " + name +
-                             " is not convex; using its convex hull");
+                             std::to_string(meshes.size()) + ") in " + name + " " + warning);
     }
-    hull->name = mesh.name;
-    out.pieces.push_back(std::move(*hull));
   }
   return out;
 }
