@@ -3,6 +3,9 @@
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
+#include <string>
+
+#include "base/error.h"
 
 namespace tumble {
 namespace {
@@ -21,5 +24,12 @@ void installInterruptHandlers() {
 }
 
 bool interruptRequested() { return g_requested.load(); }
+
+void stopIfInterrupted(const char* what, int frame, int frames) {
+  if (!interruptRequested()) return;
+  throw Error(ExitCode::Interrupted, std::string("interrupted while ") + what + ", at frame " +
+                                         std::to_string(frame) + " of " + std::to_string(frames) +
+                                         "; nothing was written");
+}
 
 }  // namespace tumble

@@ -8,4 +8,9 @@ namespace tumble {
 void installInterruptHandlers();
 bool interruptRequested();
 
+// Throws Error(Interrupted) "interrupted while WHAT, at frame K of N" if a stop was asked for: for
+// phases with nothing worth keeping yet (the simulation before any frame is rendered), whose
+// outputs are temporary files that unwinding removes.
+void stopIfInterrupted(const char* what, int frame, int frames);
+
 }  // namespace tumble

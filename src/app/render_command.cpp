@@ -122,14 +122,18 @@ int run(const RenderOptions& o) {
 
   auto total_start = std::chrono::steady_clock::now();
   PhaseTimes times;
-  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, frames.back()};
+  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, frames.back(), o.scene.keep_going};
   SceneDrawing drawing = prepareDrawing(scene, built.world);
   Simulator simulator(std::move(built.world), plan);
   Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
   auto start = std::chrono::steady_clock::now();
-  Trajectory trajectory = simulator.run([&](int f) { sim_progress.update(f); });
+  Trajectory trajectory = simulator.run([&](int f) {
+    sim_progress.update(f);
+    stopIfInterrupted("simulating", f, plan.frames);
+  });
   sim_progress.finish();
   times.simulate = secondsSince(start);
+  reportFaults(simulator.faults());
 
   RenderConfig config;
   config.width = scene.render.width;
@@ -203,6 +207,7 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Simulate a scene and render it to a video or PNG sequence");
   addSceneOptions(*cmd, o->scene);
+  addKeepGoingOption(*cmd, o->scene);
   cmd->add_option("-o,--output", o->output,
                   "out.mp4 | out.mkv | out.mov | out/ | 'out/frame_####.png' | 'out/frame_%04d.png' "
                   "(default: the scene's \"output\", else out/SCENE.mp4)");

@@ -1,5 +1,7 @@
 #include "app/scene_options.h"
 
+#include <cstdio>
+
 #include "base/error.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
@@ -15,6 +17,17 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
+}
+
+void addKeepGoingOption(CLI::App& command, SceneOptions& o) {
+  command.add_flag("--keep-going", o.keep_going,
+                   "On a numerical fault (NaN, runaway energy, deep penetration) report it and go on "
+                   "instead of stopping with exit code 70");
+}
+
+void reportFaults(const FaultCheck& faults) {
+  // Printed even with -q: the output may be garbage from the first fault on.
+  if (faults.total() > 0) std::fprintf(stderr, "tumble: warning: %s\n", faults.summary().c_str());
 }
 
 Scene loadSceneWithOverrides(const SceneOptions& o) {

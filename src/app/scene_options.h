@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "dynamics/fault_check.h"
 #include "scene/scene.h"
 
 namespace tumble {
@@ -16,10 +17,15 @@ struct SceneOptions {
   std::optional<int> fps;
   std::optional<double> duration_s;
   bool quiet = false, verbose = false;
+  bool keep_going = false;   // numerical faults are counted and reported, not fatal (render, simulate)
 };
 
 // Adds the shared flags to a subcommand.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
+// Adds --keep-going to a subcommand that simulates.
+void addKeepGoingOption(CLI::App& command, SceneOptions& options);
+// After a run with --keep-going: prints how many steps had numerical faults, and the first.
+void reportFaults(const FaultCheck& faults);
 // Loads the scene and applies the overrides, through the same checks as the file.
 Scene loadSceneWithOverrides(const SceneOptions& options);
 

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/interrupt.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_options.h"
@@ -49,17 +50,21 @@ int run(const SimulateOptions& o) {
   std::vector<std::string> names;
   for (const RigidBody& b : built.world.bodies) names.push_back(b.name);
 
-  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, scene.render.frames};
+  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, scene.render.frames, o.scene.keep_going};
   Simulator simulator(std::move(built.world), plan);
   Progress progress("simulate", plan.frames, !o.scene.quiet);
   auto start = std::chrono::steady_clock::now();
   auto on_step = [&](const World& w) { writeRows(*csv, w.time, names, samplesOf(w)); };
   if (csv && o.every_step) writeRows(*csv, 0, names, samplesOf(simulator.world()));
   Trajectory trajectory = simulator.run(
-      [&](int f) { progress.update(f); },
+      [&](int f) {
+        progress.update(f);
+        stopIfInterrupted("simulating", f, plan.frames);
+      },
       csv && o.every_step ? std::function<void(const World&)>(on_step) : nullptr);
   progress.finish();
   double wall = secondsSince(start);
+  reportFaults(simulator.faults());
   if (csv && !o.every_step)
     for (std::size_t k = 0; k < trajectory.frames.size(); ++k)
       writeRows(*csv, trajectory.times[k], names, trajectory.frames[k]);
@@ -82,6 +87,7 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate a scene without rendering; write its motion as CSV");
   addSceneOptions(*cmd, o->scene);
+  addKeepGoingOption(*cmd, o->scene);
   cmd->add_option("--trajectory", o->trajectory,
                   "CSV file: time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");

@@ -1,12 +1,32 @@
 #include "io/video_sink.h"
 
+#include <string>
 #include <system_error>
+
+#include "base/error.h"
 
 #include "io/atomic_file.h"
 
 namespace tumble {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The encoder names the file it writes, the hidden temporary one; the user knows the final name.
+template <typename F>
+void namingFinal(const fs::path& temp, const fs::path& final_path, F&& work) {
+  try {
+    work();
+  } catch (const Error& e) {
+    std::string message = e.what();
+    for (std::size_t at; (at = message.find(temp.string())) != std::string::npos;)
+      message.replace(at, temp.string().size(), final_path.string());
+    throw Error(e.code(), message);
+  }
+}
+
+}  // namespace
 
 VideoSink::VideoSink(const OutputTarget& target, const VideoSettings& settings, bool overwrite)
     : final_(target.path), overwrite_(overwrite) {
@@ -20,7 +40,7 @@ VideoSink::VideoSink(const OutputTarget& target, const VideoSettings& settings, 
   // The real extension stays last so libavformat picks the same container as for the final name.
   temp_ = temporarySibling(final_, "partial", /*keep_extension*/ true);
   try {
-    writer_ = std::make_unique<VideoWriter>(temp_, settings);
+    namingFinal(temp_, final_, [&] { writer_ = std::make_unique<VideoWriter>(temp_, settings); });
   } catch (...) {
     fs::remove(temp_, ec);   // the encoder may have created the file before failing
     throw;
@@ -36,13 +56,15 @@ VideoSink::~VideoSink() {
   }
 }
 
-void VideoSink::write(const RgbImage& image, int /*frame_number*/) { writer_->write(image); }
+void VideoSink::write(const RgbImage& image, int /*frame_number*/) {
+  namingFinal(temp_, final_, [&] { writer_->write(image); });
+}
 
 void VideoSink::finish() {
   if (done_) return;
   done_ = true;
   try {
-    writer_->finish();
+    namingFinal(temp_, final_, [&] { writer_->finish(); });
   } catch (...) {
     std::error_code ignored;
     fs::remove(temp_, ignored);
