@@ -1,5 +1,6 @@
 #include "io/png_file.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -46,8 +47,12 @@ std::string encodePng(std::FILE* file, const RgbImage& image) {
   ihdr.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
   spng_set_ihdr(ctx.get(), &ihdr);
   spng_set_srgb(ctx.get(), 0);   // the pixels are sRGB; say so, so viewers need not guess
+  errno = 0;
   int err = spng_encode_image(ctx.get(), image.pixels.data(), image.pixels.size(), SPNG_FMT_PNG,
                               SPNG_ENCODE_FINALIZE);
+  // A failed write leaves libspng in its "non-recoverable state"; the system's reason (a full
+  // disk, a file size limit) is what the user can act on.
+  if (err && errno != 0 && std::ferror(file)) return std::strerror(errno);
   return err ? spng_strerror(err) : "";
 }
 
