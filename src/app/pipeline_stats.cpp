@@ -13,10 +13,20 @@ void printPipelineStats(const Pipeline& pipeline) {
                    total > 0 ? 100 * s.seconds / total : 0.0);
   const PipelineCounters& c = pipeline.counters();
   std::fprintf(stderr,
-               "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld, unresolved %ld; "
-               "contacts: colliding %d, resting %d, LCP pivots %d, LCP failures %d\n",
+               "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld, unresolved %ld, "
+               "impacts too deep to go back for %ld\n",
                c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.stuck_substeps,
-               c.contacts.colliding, c.contacts.resting, c.contacts.pivots, c.contacts.failures);
+               c.inconsistent_pairs);
+  std::fprintf(stderr,
+               "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld, "
+               "dynamic-friction fallbacks %ld\n",
+               c.contacts.colliding, c.contacts.resting, c.contacts.pivots, c.contacts.failures,
+               c.contacts.friction_fallbacks);
+  std::fprintf(stderr,
+               "  resting islands solved by Gauss-Seidel %ld (%ld after pivoting stopped short; "
+               "%ld sweeps, %ld solves at the sweep cap)\n",
+               c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
+               c.contacts.unconverged_sweeps);
 }
 
 }  // namespace tumble

@@ -26,6 +26,10 @@ struct ContactSettings {
   double sliding_speed_m_s = 1e-5;  // m/s: tangential speed above which friction is dynamic
   int max_bisections = 60;          // halvings of the step: 2^-60 of dt is far below rounding
   bool regula_falsi = false;        // bracket by linear interpolation (Illinois) instead of halving
+  // Resting islands up to this many LCP rows (3 per contact) are solved exactly by pivoting
+  // (cost ~ rows^3); larger ones (a pile) by Gauss-Seidel sweeps (cost ~ rows per sweep). 256
+  // keeps a stack of 20 boxes (80 contacts, 240 rows) exact.
+  int max_direct_rows = 256;
 };
 
 // Material of a contact pair. Friction: geometric mean (two equal values give that value; an ice

@@ -7,6 +7,7 @@
 #include "dynamics/contact_jacobian.h"
 #include "dynamics/contact_lcp.h"
 #include "dynamics/impulse_propagation.h"
+#include "dynamics/row_gauss_seidel.h"
 
 namespace tumble {
 namespace {
@@ -113,8 +114,57 @@ void restWithBoxedFriction(const World& world, const std::vector<const Contact*>
   addForces(world, lcp.rows, r.f, wrenches);
 }
 
+// Rows (normal; two tangents for a sticking contact, one against the slide for a sliding one)
+// solved by projected Gauss-Seidel without forming A (row_gauss_seidel.h). Sliding friction is
+// mu f_n against the slide, or less where that would reverse the slide within `step_s`.
+void restIslandIteratively(const World& world, const std::vector<const Contact*>& resting,
+                           const ContactSettings& s, double step_s, std::vector<Wrench>& wrenches,
+                           ContactSolveStats& stats) {
+  ++stats.iterative_islands;
+  ContactLcp lcp;   // rows and normal_row only: A is never formed
+  std::vector<RowLimit> limits;
+  for (const Contact* c : resting) {
+    int normal = static_cast<int>(lcp.rows.size());
+    lcp.normal_row.push_back(normal);
+    lcp.rows.push_back(rowAlong(world, *c, c->normal));
+    limits.push_back({});
+    if (c->friction <= 0) continue;
+    Eigen::Vector3d vt = tangentialVelocity(world, *c);
+    double speed = vt.norm();
+    if (speed > s.sliding_speed_m_s) {
+      lcp.rows.push_back(rowAlong(world, *c, -vt / speed));
+      double target = step_s > 0 ? speed / step_s : std::numeric_limits<double>::infinity();
+      limits.push_back({RowLimit::Sliding, normal, c->friction, target});
+    } else {
+      Eigen::Vector3d t1, t2;
+      tangentsOf(c->normal, t1, t2);
+      for (const Eigen::Vector3d& t : {t1, t2}) {
+        lcp.rows.push_back(rowAlong(world, *c, t));
+        limits.push_back({RowLimit::Static, normal, c->friction, 0});
+      }
+    }
+  }
+  Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches);
+  RowGaussSeidelResult r = solveRowsGaussSeidel(world, lcp.rows, b, limits);
+  stats.sweeps += r.sweeps;
+  if (!r.converged) ++stats.unconverged_sweeps;
+  addForces(world, lcp.rows, r.f, wrenches);
+}
+
 void restIsland(const World& world, const std::vector<const Contact*>& resting, const ContactSettings& s,
-                std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+                double step_s, std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+  // Pivoting costs the cube of the rows; past max_direct_rows the iterative solve takes over.
+  if (3 * resting.size() > static_cast<std::size_t>(s.max_direct_rows)) {
+    restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+    return;
+  }
+  // A pivoting solve that stops short (pivot or friction-pass cap) with forces that do not satisfy
+  // the LCP would be used as it is; the iterative solve replaces it then (bounded forces).
+  auto unusable = [](const lcp::LcpResult& r, const lcp::LcpProblem& p) {
+    if (r.status == lcp::LcpStatus::Solved) return false;
+    if (!r.f.allFinite()) return true;
+    return !(r.residual.complementarity <= 1e-6 * (p.b.lpNorm<Eigen::Infinity>() + 1));
+  };
   // Static friction joins the LCP (tangential acceleration 0 while |f_t| <= mu f_n). A sliding
   // contact feels dynamic friction mu f_n against its sliding direction instead: a force that
   // depends on the unknown f_n, found by fixed-point iteration on f_n (exact once f_n is steady).
@@ -142,6 +192,11 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m);   // dynamic friction magnitudes
   lcp.problem.b = b;
   lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
+  if (unusable(r, lcp.problem)) {
+    ++stats.iterative_fallbacks;
+    restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+    return;
+  }
   // The iteration contracts when dynamic friction changes the normal forces less than it is
   // changed by them; where a sliding body is wedged (friction pressing it into its supports) the
   // gain exceeds 1 and the forces would grow geometrically (to 1e12 N within 8 passes, seen in the
@@ -161,6 +216,11 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
     if (change <= 1e-12 * (1 + g.cwiseAbs().maxCoeff())) break;
     lcp.problem.b = b + coupling * g;
     r = solveContactLcp(lcp.problem, stats);
+    if (unusable(r, lcp.problem)) {
+      ++stats.iterative_fallbacks;
+      restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+      return;
+    }
   }
   addForces(world, lcp.rows, r.f, wrenches);
   if (m > 0) addForces(world, slide_rows, g, wrenches);
@@ -169,14 +229,14 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
 }  // namespace
 
 void addRestingForces(const World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                      std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+                      std::vector<Wrench>& wrenches, ContactSolveStats& stats, double step_s) {
   std::vector<const Contact*> resting;
   for (const Contact& c : contacts)
     if (classify(world, c, s) == ContactClass::Resting) resting.push_back(&c);
   stats.resting += static_cast<int>(resting.size());
   // Wrenches of one island depend only on that island's bodies, so the order is immaterial.
   for (const std::vector<const Contact*>& island : splitIntoIslands(world, resting))
-    restIsland(world, island, s, wrenches, stats);
+    restIsland(world, island, s, step_s, wrenches, stats);
 }
 
 }  // namespace tumble

@@ -18,10 +18,13 @@ enum class ContactClass { Separating, Resting, Colliding };
 ContactClass classify(const World& world, const Contact& c, const ContactSettings& settings);
 
 struct ContactSolveStats {
-  int colliding = 0, resting = 0;   // contacts of each class seen
-  int pivots = 0;                   // LCP pivots spent
-  int failures = 0;                 // LCP solves that did not converge (result used anyway)
-  int friction_fallbacks = 0;       // islands whose dynamic friction diverged (boxed friction used)
+  long colliding = 0, resting = 0;  // contacts of each class seen
+  long pivots = 0;                  // LCP pivots spent
+  long failures = 0;                // LCP solves that did not converge (result used anyway)
+  long friction_fallbacks = 0;      // islands whose dynamic friction diverged (boxed friction used)
+  long iterative_islands = 0;       // resting islands solved by Gauss-Seidel (too large to pivot)
+  long iterative_fallbacks = 0;     // of those: pivoting stopped short with unusable forces
+  long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
 };
 
 // Applies restitution impulses to every colliding contact and passes them on through the touching
@@ -33,9 +36,11 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
                        ContactSolveStats& stats);
 
 // Adds the resting-contact forces (normal and friction) to `wrenches`, which hold the applied
-// forces on entry (they determine the accelerations the contacts must cancel).
+// forces on entry (they determine the accelerations the contacts must cancel). Islands of more
+// than settings.max_direct_rows rows are solved iteratively; there a sliding contact's friction
+// stops at what would halt the slide within step_s (0: exactly mu f_n).
 void addRestingForces(const World& world, const std::vector<Contact>& contacts,
                       const ContactSettings& settings, std::vector<Wrench>& wrenches,
-                      ContactSolveStats& stats);
+                      ContactSolveStats& stats, double step_s = 0);
 
 }  // namespace tumble

@@ -94,7 +94,7 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
     else for (Wrench& w : wrenches_) w = Wrench{};
   });
   if (has_contacts_)
-    timed(Resting, [&] { addRestingForces(world, contacts_now_, settings.contact, wrenches_, counters_.contacts); });
+    timed(Resting, [&] { addRestingForces(world, contacts_now_, settings.contact, wrenches_, counters_.contacts, settings.dt); });
 
   double h = has_contacts_ ? std::min(remaining, tunnellingBound(world, remaining)) : remaining;
   StepSettings sub = settings;
@@ -159,13 +159,29 @@ double Pipeline::backStep(World& world, const StepSettings& settings, double h) 
     deepest = std::max(deepest, contacts_end_[i].depth);
   }
   if (offending.empty()) return h;
+  // The bracket needs every pair within the tolerance at the start. The manifold (which said the
+  // pair was apart) and the separation bisection measures can disagree on a pair the narrow phase
+  // missed at the start; such a pair is not a first contact to find but a penetration to project,
+  // and bisecting on it would return t = 0 and stall the step. It is dropped and counted.
+  snapshot_.restore(world);
+  std::vector<PiecePair> watched;
+  for (const PiecePair& pair : offending)
+    if (detector_.maxDepth(world, {pair}) <= tol) watched.push_back(pair);
+    else ++counters_.inconsistent_pairs;
   StepSettings sub = settings;
   auto depth_at = [&](double t) {
     snapshot_.restore(world);
     sub.dt = t;
     integrate(world, wrenches_, sub);
-    return detector_.maxDepth(world, offending);
+    return detector_.maxDepth(world, watched);
   };
+  if (watched.empty()) {
+    depth_at(h);
+    return h;
+  }
+  deepest = depth_at(h);
+  ++counters_.bisection_evaluations;
+  if (deepest <= tol) return h;   // only the manifold saw it too deep: nothing to go back for
   ImpactSearch found = findFirstContact(depth_at, h, deepest, tol, settings.contact.max_bisections,
                                         settings.contact.regula_falsi);
   counters_.bisection_evaluations += found.evaluations;

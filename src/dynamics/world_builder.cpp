@@ -88,6 +88,7 @@ BuiltWorld buildWorld(const Scene& scene) {
   out.step.dt = scene.simulation.dt_s;
   out.step.integrator = scene.simulation.integrator;
   out.step.contact.regula_falsi = scene.simulation.regula_falsi;
+  out.step.contact.max_direct_rows = scene.simulation.pivoting_max_rows;
   out.step.contact.tolerance_m = scene.simulation.contact_tolerance_m;
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));

@@ -78,6 +78,7 @@ struct SimulationSpec {
   Integrator integrator = Integrator::Rk4;
   Eigen::Vector3d gravity_m_s2{0, 0, -9.81};
   bool regula_falsi = false;                           // contact time search: bisection or secant
+  int pivoting_max_rows = 256;                         // larger resting islands: Gauss-Seidel
   double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
 };
 

@@ -59,6 +59,7 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
   sim.integrator = readIntegrator(in, "integrator", sim.integrator);
   sim.gravity_m_s2 = in.vector3("gravity_m_s2", sim.gravity_m_s2, {-1e4, 1e4});
   sim.regula_falsi = readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
+  sim.pivoting_max_rows = in.integer("pivoting_max_rows", sim.pivoting_max_rows, 0, 100000);
   sim.contact_tolerance_m = in.number("contact_tolerance_m", sim.contact_tolerance_m, {1e-9, 1e-2});
   // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
   // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
