@@ -101,15 +101,48 @@ Eigen::VectorXd freeAccelerations(const World& world, const ContactLcp& lcp,
   return b;
 }
 
+// A slide slower than friction can stop within one step is held by static friction instead:
+// dynamic friction held over the whole step would overshoot and reverse it (a sliding block then
+// chatters at about mu g dt / 2 instead of stopping). The deceleration friction can give is
+// estimated from the contact's own normal load, mu times the free normal acceleration.
+bool slides(const World& world, const Contact& c, const Wrench& wa, const Wrench& wb, const ContactSettings& s,
+            double step_s, const Eigen::Vector3d& vt) {
+  double speed = vt.norm();
+  if (speed <= s.sliding_speed_m_s) return false;
+  if (step_s <= 0) return true;
+  const RigidBody& A = world.bodies[c.a];
+  const RigidBody& B = world.bodies[c.b];
+  double load = -c.normal.dot(pointAcceleration(B, wb, c.point) - pointAcceleration(A, wa, c.point));
+  return speed > c.friction * std::max(0.0, load) * step_s;
+}
+
+// Static friction rows ask for the tangential velocity left at the contact to vanish within the
+// step (acceleration -v_t / step_s), not merely for zero acceleration, so a slide held by static
+// friction stops instead of going on at constant speed. Rows slipping slower than the sliding
+// speed (contacts that stick) keep asking for zero acceleration: exact resting cases stay exact.
+void stopResidualSlip(const World& world, const std::vector<ContactRow>& rows, const std::vector<char>& is_friction,
+                      const ContactSettings& s, double step_s, Eigen::VectorXd& b) {
+  if (step_s <= 0) return;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (!is_friction[r]) continue;
+    double v = rowVelocity(world, rows[r]);
+    if (std::abs(v) > s.sliding_speed_m_s) b[r] += v / step_s;
+  }
+}
+
 // The fallback when dynamic friction cannot be found by iteration: every contact gets boxed
 // friction rows (|f_t| <= mu f_n, asking for zero tangential acceleration), as ODE and Bullet treat
 // all contacts. Always bounded (A is positive semi-definite); a sliding contact is then held by
 // at most mu f_n for this sub-step instead of being slowed by exactly mu f_n. Counted.
 void restWithBoxedFriction(const World& world, const std::vector<const Contact*>& resting,
+                           const ContactSettings& s, double step_s,
                            std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
   ++stats.friction_fallbacks;
   ContactLcp lcp = buildContactLcp(world, resting, std::vector<char>(resting.size(), 1));
   lcp.problem.b = freeAccelerations(world, lcp, wrenches);
+  std::vector<char> is_friction(lcp.rows.size(), 1);
+  for (int r : lcp.normal_row) is_friction[r] = 0;
+  stopResidualSlip(world, lcp.rows, is_friction, s, step_s, lcp.problem.b);
   lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
   addForces(world, lcp.rows, r.f, wrenches);
 }
@@ -131,7 +164,7 @@ void restIslandIteratively(const World& world, const std::vector<const Contact*>
     if (c->friction <= 0) continue;
     Eigen::Vector3d vt = tangentialVelocity(world, *c);
     double speed = vt.norm();
-    if (speed > s.sliding_speed_m_s) {
+    if (slides(world, *c, wrenches[c->a], wrenches[c->b], s, step_s, vt)) {
       lcp.rows.push_back(rowAlong(world, *c, -vt / speed));
       double target = step_s > 0 ? speed / step_s : std::numeric_limits<double>::infinity();
       limits.push_back({RowLimit::Sliding, normal, c->friction, target});
@@ -145,6 +178,9 @@ void restIslandIteratively(const World& world, const std::vector<const Contact*>
     }
   }
   Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches);
+  std::vector<char> is_static_friction(limits.size());
+  for (std::size_t r = 0; r < limits.size(); ++r) is_static_friction[r] = limits[r].kind == RowLimit::Static;
+  stopResidualSlip(world, lcp.rows, is_static_friction, s, step_s, b);
   RowGaussSeidelResult r = solveRowsGaussSeidel(world, lcp.rows, b, limits);
   stats.sweeps += r.sweeps;
   if (!r.converged) ++stats.unconverged_sweeps;
@@ -173,7 +209,8 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   std::vector<int> slide_contact;
   for (std::size_t i = 0; i < resting.size(); ++i) {
     Eigen::Vector3d vt = tangentialVelocity(world, *resting[i]);
-    bool sliding = vt.norm() > s.sliding_speed_m_s;
+    const Contact& c = *resting[i];
+    bool sliding = slides(world, c, wrenches[c.a], wrenches[c.b], s, step_s, vt);
     sticks[i] = !sliding;
     if (sliding && resting[i]->friction > 0) {
       slide_rows.push_back(rowAlong(world, *resting[i], -vt.normalized()));
@@ -182,6 +219,9 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   }
   ContactLcp lcp = buildContactLcp(world, resting, sticks);
   Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches);
+  std::vector<char> is_friction(lcp.rows.size(), 1);
+  for (int r : lcp.normal_row) is_friction[r] = 0;
+  stopResidualSlip(world, lcp.rows, is_friction, s, step_s, b);
   const int n = static_cast<int>(lcp.rows.size()), m = static_cast<int>(slide_rows.size());
   Eigen::MatrixXd coupling;   // J_lcp M^-1 J_slide^T: what dynamic friction does to each row
   if (m > 0) {
@@ -208,7 +248,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
       next[k] = resting[slide_contact[k]]->friction * std::max(0.0, r.f[lcp.normal_row[slide_contact[k]]]);
     double change = (next - g).cwiseAbs().maxCoeff();
     if (pass > 0 && change > last_change) {
-      restWithBoxedFriction(world, resting, wrenches, stats);
+      restWithBoxedFriction(world, resting, s, step_s, wrenches, stats);
       return;
     }
     last_change = change;
