@@ -2,8 +2,7 @@
 // < 1 % of the edge, tilt < 0.1 deg, kinetic energy < 1e-6 m g h after 1 s.
 //
 // Shorter horizon than the issue's 60 s: the stack runs 1.5 s here (about 9 s of wall time on the
-// 2-core machine; the 60 s belong to the benchmark). The pyramid is hidden ("[.]": run it by name
-// or tag) since even 1 s of it takes minutes at the current pile speed.
+// 2-core machine; the 60 s belong to the benchmark). The pyramid is a known failure over 0.3 s.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -54,6 +53,11 @@ TEST_CASE("stack of 20: stands without drift, tilt or jitter (1.5 s horizon)", "
   checkStack(runStack("stack20", 1.5));
 }
 
-TEST_CASE("pyramid of 55: stands without drift, tilt or jitter (60 s)", "[.][hard][stack][pyramid]") {
-  checkStack(runStack("pyramid55", 60));
+// Known failure: the pyramid collapses within 0.03 s. Every box rests on two (eight coplanar
+// points); its one island has 660 rows, past the pivoting limit, and Gauss-Seidel without a warm
+// start leaves it unbalanced (with 3000 sweeps it holds until 0.1 s; pivoting the whole island
+// instead stops short as well and it falls at 0.03 s, 150 s of wall time per simulated s).
+TEST_CASE("pyramid of 55: stands without drift, tilt or jitter (0.3 s; reached: collapses at 0.03 s)",
+          "[hard][stack][pyramid][!shouldfail]") {
+  checkStack(runStack("pyramid55", 0.3));
 }
