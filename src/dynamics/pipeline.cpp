@@ -1,5 +1,6 @@
 #include "dynamics/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -193,13 +194,26 @@ double Pipeline::backStep(World& world, const StepSettings& settings, double h) 
 // along the normal, in inverse proportion to their masses. Only positions move, never velocities,
 // so no kinetic energy is added (unlike a Baumgarte term, which pushes bodies apart with speed).
 void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
-  for (const Contact& c : contacts_now_) {
-    if (c.depth <= settings.contact.tolerance_m) continue;
+  // Once per pair of bodies, by its deepest point: the four corners of a face resting too deep
+  // share one depth, and pushing once per corner would open a gap of three depths, leaving the
+  // face unsupported (no resting force across a gap) for the next sub-step.
+  const double tol = settings.contact.tolerance_m;
+  std::vector<std::pair<std::pair<int, int>, std::size_t>> deepest;   // (bodies, contact): first-seen order
+  for (std::size_t i = 0; i < contacts_now_.size(); ++i) {
+    const Contact& c = contacts_now_[i];
+    if (c.depth <= tol) continue;
+    std::pair<int, int> bodies{c.a, c.b};
+    auto it = std::find_if(deepest.begin(), deepest.end(), [&](const auto& d) { return d.first == bodies; });
+    if (it == deepest.end()) deepest.push_back({bodies, i});
+    else if (c.depth > contacts_now_[it->second].depth) it->second = i;
+  }
+  for (const auto& [bodies, index] : deepest) {
+    const Contact& c = contacts_now_[index];
     RigidBody& A = world.bodies[c.a];
     RigidBody& B = world.bodies[c.b];
     double wa = A.inv_mass, wb = B.inv_mass;
     if (wa + wb <= 0) continue;
-    double push = c.depth - 0.5 * settings.contact.tolerance_m;
+    double push = c.depth - 0.5 * tol;
     A.x -= c.normal * (push * wa / (wa + wb));
     B.x += c.normal * (push * wb / (wa + wb));
     ++counters_.projections;
