@@ -85,7 +85,7 @@ TEST_CASE("assets: every other shipped mesh loads as one convex piece", "[import
   test::checkConvexPiece(in.pieces[0]);
 }
 
-TEST_CASE("glTF node transforms are applied; scale multiplies lengths", "[import]") {
+TEST_CASE("glTF node transforms are applied and scale multiplies lengths", "[import]") {
   // The pyramid sits at x = 0.5 by its node's translation; its centroid is a quarter of the
   // height (0.3 m, glTF's +y) above the base.
   const MassProperties mp = massProperties(importConvexPieces(asset("pyramid.gltf")).pieces, 1);

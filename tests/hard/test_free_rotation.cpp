@@ -63,7 +63,7 @@ SpinOutcome runSpin(Scene scene, double seconds, int spun_rank, Integrator integ
 
 }  // namespace
 
-TEST_CASE("free rotation: about the intermediate axis it flips; RK4 keeps E and |L| to 1e-6", "[hard][free_rotation]") {
+TEST_CASE("free rotation: about the intermediate axis it flips, and RK4 keeps E and |L| to 1e-6", "[hard][free_rotation]") {
   SpinOutcome out = runSpin(hard::loadHardScene("free_rotation_intermediate"), 10, 1, Integrator::Rk4);
   INFO("flips " << out.flips << ", energy drift " << out.energy_drift << ", |L| drift " << out.momentum_drift);
   CHECK(out.flips >= 2);   // the reference (RK4 on Euler's equations, h = 1e-4 s) flips 3 times

@@ -76,7 +76,7 @@ TEST_CASE("quat_wxyz is normalised and w comes first", "[scene]") {
   CHECK(q.z() == Approx(std::sqrt(0.5)));
 }
 
-TEST_CASE("dt_s must divide the frame interval; the exact step is interval / steps", "[scene]") {
+TEST_CASE("dt_s must divide the frame interval, and the exact step is interval / steps", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "simulation": {"dt_s": 0.0041667},
     "render": {"fps": 24}, "bodies": [{"shape": "box"}]})", "scenes/test.json");
   CHECK(s.simulation.steps_per_frame == 10);
