@@ -38,7 +38,10 @@ int farthestFrom(const std::vector<ContactPoint>& pts, int from, const Eigen::Ve
 }
 
 int largestTriangle(const std::vector<ContactPoint>& pts, int i1, int i2, const Eigen::Vector3d& n) {
-  int best = -1;
+  // Starts at the first other point, not -1: with non-finite positions (a state the fault check
+  // is about to report) every area is NaN and no comparison holds.
+  int best = 0;
+  while (best == i1 || best == i2) ++best;
   double most = -1;
   for (int i = 0; i < int(pts.size()); ++i) {
     if (i == i1 || i == i2) continue;

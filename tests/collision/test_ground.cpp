@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
+#include "collision/narrow_internal.h"
 #include "collision/narrow_phase.h"
 #include "collision_checks.h"
 #include "geometry/primitives.h"
@@ -92,4 +95,14 @@ TEST_CASE("groundSeparation: lowest vertex height above the plane", "[ground]") 
   const auto q = Eigen::Quaterniond::FromTwoVectors(Vector3d(1, 1, 1), Vector3d(0, 0, 1));
   CHECK(groundSeparation(box, pose({0, 0, 2}, q), 0.5) ==
         Approx(2 - 0.5 * std::sqrt(3.0) - 0.5).epsilon(1e-12));
+}
+
+// Found by the sanitizer build: a body whose pose went NaN (a fault the fault check reports after
+// the step) reached the four-point reduction with NaN positions, where every area comparison is
+// false and a point index stayed -1 (read before the vector). It must keep four points, not crash.
+TEST_CASE("contact reduction keeps four points of a manifold whose positions are NaN", "[collision][ground]") {
+  std::vector<ContactPoint> points(6);
+  for (ContactPoint& p : points) p.position = Eigen::Vector3d::Constant(std::nan(""));
+  narrow::reduceManifold(points, Eigen::Vector3d::UnitZ());
+  CHECK(points.size() <= 4);
 }
