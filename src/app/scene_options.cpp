@@ -15,6 +15,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.dt_s)");
   command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.integrator)")
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
+  command.add_option("--contact-model", o.contact_model,
+                     "baraff | time_stepping (overrides simulation.contact_model)")
+      ->check(CLI::IsMember({"baraff", "time_stepping"}));
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
 }
@@ -37,6 +40,8 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
   if (o.dt_s) setTimeStep(scene, *o.dt_s, "--dt");
   if (!o.integrator.empty())
     scene.simulation.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
+  if (!o.contact_model.empty())
+    scene.simulation.contact_model = o.contact_model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
   return scene;
 }
 

@@ -14,6 +14,7 @@ struct SceneOptions {
   std::string scene;
   std::optional<double> dt_s;
   std::string integrator;
+  std::string contact_model;   // empty: the scene's
   std::optional<int> fps;
   std::optional<double> duration_s;
   bool quiet = false, verbose = false;

@@ -14,6 +14,9 @@ namespace {
 struct TumbleOptions {
   Integrator integrator = Integrator::Rk4;
   double tolerance_m = 1e-6;   // contact-time search: touching within this, deeper is back-stepped
+  ContactModel model = ContactModel::Baraff;
+  int sweeps = 30;             // time stepping: Gauss-Seidel sweeps per step at most
+  int pivoting_max_rows = 256; // islands up to this many rows are solved by pivoting
 };
 
 BodySpec boxSpec(const BoxBody& b, const BenchScene& scene, bool is_static, int index) {
@@ -42,6 +45,9 @@ Scene tumbleScene(const BenchScene& bench, double dt, const TumbleOptions& opt) 
   scene.simulation.integrator = opt.integrator;
   scene.simulation.gravity_m_s2 = bench.gravity;
   scene.simulation.contact_tolerance_m = opt.tolerance_m;
+  scene.simulation.contact_model = opt.model;
+  scene.simulation.time_stepping_sweeps = opt.sweeps;
+  scene.simulation.pivoting_max_rows = opt.pivoting_max_rows;
   if (bench.ground) {
     BodySpec ground;
     ground.name = "ground";
@@ -123,6 +129,12 @@ std::vector<EngineSetting> tumbleSettings() {
       setting("tumble-rk4-tol1e-4", {Integrator::Rk4, 1e-4}, false),
       setting("tumble-semi", {Integrator::SemiImplicitEuler, 1e-6}, false),
       setting("tumble-semi-tol1e-4", {Integrator::SemiImplicitEuler, 1e-4}, false),
+      // The time-stepping contact model: no back-stepping, so it runs the piles too.
+      // The time-stepping contact model: no back-stepping, so it runs the piles too. Default: small
+      // islands pivoted exactly; -gs: every island by Gauss-Seidel (30 or 10 sweeps), as Bullet does.
+      setting("tumble-ts", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 30, 256}, true),
+      setting("tumble-ts-gs", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 30, 0}, true),
+      setting("tumble-ts-gs10", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 10, 0}, true),
   };
 }
 

@@ -34,18 +34,12 @@ double thickness(const ConvexPiece& piece) {
 
 }  // namespace
 
-template <typename F>
-void Pipeline::timed(Stage stage, F&& work) {
-  auto start = std::chrono::steady_clock::now();
-  work();
-  profile_[stage].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 Pipeline::Pipeline(const World& world, const StepSettings& settings)
     : apply_gravity_(world.gravity.squaredNorm() > 0),
       moving_(movingBodies(world)),
       static_(static_cast<int>(world.bodies.size()) - moving_),
       integrator_(settings.integrator),
+      model_(settings.model),
       dt_(settings.dt),
       detector_(world),
       wrenches_(world.bodies.size()) {
@@ -63,6 +57,10 @@ Pipeline::Pipeline(const World& world, const StepSettings& settings)
 }
 
 void Pipeline::step(World& world, const StepSettings& settings) {
+  if (settings.model == ContactModel::TimeStepping) {
+    timeStep(world, settings);
+    return;
+  }
   double start_time = world.time;
   double remaining = settings.dt;
   // Sub-steps end at first contacts; a few per step is normal. The cap only stops a pathological
@@ -208,7 +206,7 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
     else if (c.depth > contacts_now_[it->second].depth) it->second = i;
   }
   for (const auto& [bodies, index] : deepest) {
-    const Contact& c = contacts_now_[index];
+    const Contact c = contacts_now_[index];   // a copy: the loop below changes the depths
     RigidBody& A = world.bodies[c.a];
     RigidBody& B = world.bodies[c.b];
     double wa = A.inv_mass, wb = B.inv_mass;
@@ -216,6 +214,13 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
     double push = c.depth - 0.5 * tol;
     A.x -= c.normal * (push * wa / (wa + wb));
     B.x += c.normal * (push * wb / (wa + wb));
+    // The time-stepping model goes on with these contacts without detecting again: the pair's
+    // points moved apart by the push along their own normals, and their depths follow.
+    if (model_ == ContactModel::TimeStepping) {
+      const Eigen::Vector3d moved = c.normal * push;
+      for (Contact& other : contacts_now_)
+        if (other.a == c.a && other.b == c.b) other.depth -= other.normal.dot(moved);
+    }
     ++counters_.projections;
     contacts_fresh_ = false;
   }
@@ -224,16 +229,31 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
 std::vector<std::string> Pipeline::describe() const {
   std::vector<std::string> lines;
   std::string moving = std::to_string(moving_) + (moving_ == 1 ? " moving body" : " moving bodies");
+  std::string integrate = std::string("integrate   ") +
+                          (integrator_ == Integrator::Rk4 ? "RK4" : "semi-implicit Euler") + ", dt = " +
+                          std::to_string(dt_) + " s, " + moving + "; " + std::to_string(static_) +
+                          " static never integrated";
+  if (model_ == ContactModel::TimeStepping) {
+    if (has_contacts_) {
+      lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space, "
+                      "within a speculative margin (how far bodies can close in a step)");
+      lines.push_back("correct     position projection of residual penetration");
+    }
+    if (apply_gravity_) lines.push_back("forces      gravity impulse on " + moving);
+    if (has_contacts_)
+      lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
+                      "warm-started Gauss-Seidel");
+    lines.push_back(integrate + " (free motion with the new momenta)");
+    if (!has_contacts_) lines.push_back("contacts    none needed: nothing in this scene can touch");
+    return lines;
+  }
   if (has_contacts_) {
     lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space");
     lines.push_back("collide     Newton impulses on colliding contacts (LCP on impulses, friction)");
   }
   if (apply_gravity_) lines.push_back("forces      gravity on " + moving);
   if (has_contacts_) lines.push_back("resting     contact forces: LCP a = A f + b (Dantzig pivoting) + Coulomb friction");
-  lines.push_back(std::string("integrate   ") +
-                  (integrator_ == Integrator::Rk4 ? "RK4" : "semi-implicit Euler") + ", dt = " +
-                  std::to_string(dt_) + " s, " + moving + "; " + std::to_string(static_) +
-                  " static never integrated");
+  lines.push_back(integrate);
   if (has_contacts_) {
     lines.push_back("back-step   bisection to the first contact when a step ends too deep");
     lines.push_back("correct     position projection of residual penetration");

@@ -11,10 +11,15 @@
 //   back-step  bisection to the first contact      time_of_impact.cpp
 //   correct    project out residual penetration    pipeline.cpp (correctPenetration)
 //
+// With the time-stepping contact model (time_stepping.h, pipeline_time_stepping.cpp) a step is
+// instead: detect (within a speculative margin), correct, forces, resting (the velocity-level
+// impulse problem), integrate — never cut.
+//
 // A step of dt may be cut into sub-steps: at each first contact found by back-stepping, and where
 // a body moves fast enough to pass through the thinnest piece (the tunnelling bound).
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -23,6 +28,7 @@
 #include "dynamics/contact_solver.h"
 #include "dynamics/integrator.h"
 #include "dynamics/step_settings.h"
+#include "dynamics/time_stepping.h"
 #include "dynamics/world.h"
 
 namespace tumble {
@@ -56,15 +62,22 @@ class Pipeline {
  private:
   enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, StageCount };
   double substep(World& world, const StepSettings& settings, double remaining);
+  void timeStep(World& world, const StepSettings& settings);
   double tunnellingBound(const World& world, double h) const;
   double backStep(World& world, const StepSettings& settings, double h);
   void correctPenetration(World& world, const StepSettings& settings);
-  template <typename F> void timed(Stage stage, F&& work);
+  template <typename F> void timed(Stage stage, F&& work) {
+    auto start = std::chrono::steady_clock::now();
+    work();
+    profile_[stage].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
 
   bool apply_gravity_ = false;
   bool has_contacts_ = false;
   int moving_ = 0, static_ = 0;
   Integrator integrator_ = Integrator::Rk4;
+  ContactModel model_ = ContactModel::Baraff;
+  TimeStepper stepper_;
   double dt_ = 0;
   ContactDetector detector_;
   std::vector<Contact> contacts_now_, contacts_end_;

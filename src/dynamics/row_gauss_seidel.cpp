@@ -6,33 +6,23 @@
 namespace tumble {
 namespace {
 
-// What a unit force along a row does to one of its bodies (zero for a static body).
-struct Side {
-  int body = -1;
-  Eigen::Vector3d linear = Eigen::Vector3d::Zero();    // M^-1 J^T: velocity change per unit force
-  Eigen::Vector3d angular = Eigen::Vector3d::Zero();
-  Eigen::Vector3d dir = Eigen::Vector3d::Zero();       // J: signed direction and arm
-  Eigen::Vector3d arm = Eigen::Vector3d::Zero();
+// A row as the sweep needs it. Static bodies keep their index: their inverse mass and inertia are
+// zero, so the updates leave their (zero) velocity change untouched and no branch is needed.
+struct Row {
+  int a = 0, b = 0;
+  Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+  Eigen::Vector3d arm_a = Eigen::Vector3d::Zero(), arm_b = Eigen::Vector3d::Zero();   // J's angular parts
+  Eigen::Vector3d ang_a = Eigen::Vector3d::Zero(), ang_b = Eigen::Vector3d::Zero();   // I^-1 arm per side
+  double inv_mass_a = 0, inv_mass_b = 0;
+  double inv_diag = 0;
 };
-
-Side sideOf(const World& world, const std::vector<Eigen::Matrix3d>& inv_inertia, int index,
-            const Eigen::Vector3d& r, const Eigen::Vector3d& dir, double sign) {
-  Side s;
-  const RigidBody& body = world.bodies[index];
-  if (body.is_static) return s;
-  s.body = index;
-  s.dir = sign * dir;
-  s.arm = sign * r.cross(dir);
-  s.linear = s.dir * body.inv_mass;
-  s.angular = inv_inertia[index] * s.arm;
-  return s;
-}
 
 }  // namespace
 
 RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<ContactRow>& rows,
                                           const Eigen::VectorXd& b, const std::vector<RowLimit>& limits,
-                                          const RowGaussSeidelSettings& settings) {
+                                          const RowGaussSeidelSettings& settings,
+                                          const Eigen::VectorXd& start) {
   const int n = static_cast<int>(rows.size());
   RowGaussSeidelResult out;
   out.f = Eigen::VectorXd::Zero(n);
@@ -40,56 +30,66 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     out.converged = true;
     return out;
   }
-  std::vector<Eigen::Matrix3d> inv_inertia(world.bodies.size(), Eigen::Matrix3d::Zero());
-  std::vector<char> used(world.bodies.size(), 0);
+  const std::size_t bodies = world.bodies.size();
+  std::vector<Eigen::Matrix3d> inv_inertia(bodies, Eigen::Matrix3d::Zero());
+  std::vector<char> used(bodies, 0);
   for (const ContactRow& r : rows) used[r.a] = used[r.b] = 1;
-  for (std::size_t k = 0; k < world.bodies.size(); ++k)
+  for (std::size_t k = 0; k < bodies; ++k)
     if (used[k]) inv_inertia[k] = inverseInertiaWorld(world.bodies[k]);
 
-  std::vector<Side> sa(n), sb(n);
-  Eigen::VectorXd inv_diag(n);
+  std::vector<Row> data(n);
   for (int i = 0; i < n; ++i) {
-    sa[i] = sideOf(world, inv_inertia, rows[i].a, rows[i].ra, rows[i].dir, -1);
-    sb[i] = sideOf(world, inv_inertia, rows[i].b, rows[i].rb, rows[i].dir, +1);
-    double d = sa[i].dir.dot(sa[i].linear) + sa[i].arm.dot(sa[i].angular) + sb[i].dir.dot(sb[i].linear) +
-               sb[i].arm.dot(sb[i].angular);
-    inv_diag[i] = d > 0 ? 1 / d : 0;   // a row between two static bodies takes no force
+    const ContactRow& r = rows[i];
+    Row& d = data[i];
+    d.a = r.a;
+    d.b = r.b;
+    d.dir = r.dir;
+    d.arm_a = -r.ra.cross(r.dir);
+    d.arm_b = r.rb.cross(r.dir);
+    d.ang_a = inv_inertia[r.a] * d.arm_a;
+    d.ang_b = inv_inertia[r.b] * d.arm_b;
+    d.inv_mass_a = world.bodies[r.a].inv_mass;
+    d.inv_mass_b = world.bodies[r.b].inv_mass;
+    double diag = d.inv_mass_a + d.inv_mass_b + d.arm_a.dot(d.ang_a) + d.arm_b.dot(d.ang_b);
+    d.inv_diag = diag > 0 ? 1 / diag : 0;   // a row between two static bodies takes no force
   }
   // Acceleration of each body from the forces so far: linear and angular parts.
-  std::vector<Eigen::Vector3d> lin(world.bodies.size(), Eigen::Vector3d::Zero());
-  std::vector<Eigen::Vector3d> ang(world.bodies.size(), Eigen::Vector3d::Zero());
-  auto rowAccel = [&](int i) {
-    double w = b[i];
-    for (const Side* s : {&sa[i], &sb[i]})
-      if (s->body >= 0) w += s->dir.dot(lin[s->body]) + s->arm.dot(ang[s->body]);
-    return w;
+  std::vector<Eigen::Vector3d> lin(bodies, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d> ang(bodies, Eigen::Vector3d::Zero());
+  auto push = [&](const Row& d, double df) {
+    lin[d.a] -= (df * d.inv_mass_a) * d.dir;
+    lin[d.b] += (df * d.inv_mass_b) * d.dir;
+    ang[d.a] += df * d.ang_a;
+    ang[d.b] += df * d.ang_b;
   };
+  if (start.size() == n) {
+    out.f = start;
+    for (int i = 0; i < n; ++i) push(data[i], start[i]);
+  }
   const double stop = settings.tolerance * (b.lpNorm<Eigen::Infinity>() + 1e-300);
   for (out.sweeps = 1; out.sweeps <= settings.max_sweeps; ++out.sweeps) {
     double largest_change = 0;
     for (int i = 0; i < n; ++i) {
+      const Row& d = data[i];
       const RowLimit& lim = limits[i];
-      double w = rowAccel(i), f = out.f[i], next = f;
+      double w = b[i] + d.dir.dot(lin[d.b] - lin[d.a]) + d.arm_a.dot(ang[d.a]) + d.arm_b.dot(ang[d.b]);
+      double f = out.f[i], next = f;
       switch (lim.kind) {
-        case RowLimit::Normal: next = std::max(0.0, f - w * inv_diag[i]); break;
+        case RowLimit::Normal: next = std::max(0.0, f - w * d.inv_diag); break;
         case RowLimit::Static: {
           double bound = lim.mu * out.f[lim.normal];
-          next = std::clamp(f - w * inv_diag[i], -bound, bound);
+          next = std::clamp(f - w * d.inv_diag, -bound, bound);
           break;
         }
         case RowLimit::Sliding:
-          next = std::clamp(f + (lim.target - w) * inv_diag[i], 0.0, lim.mu * out.f[lim.normal]);
+          next = std::clamp(f + (lim.target - w) * d.inv_diag, 0.0, lim.mu * out.f[lim.normal]);
           break;
       }
       double df = next - f;
       if (df == 0) continue;
       out.f[i] = next;
-      for (const Side* s : {&sa[i], &sb[i]})
-        if (s->body >= 0) {
-          lin[s->body] += df * s->linear;
-          ang[s->body] += df * s->angular;
-        }
-      if (inv_diag[i] > 0) largest_change = std::max(largest_change, std::abs(df) / inv_diag[i]);
+      push(d, df);
+      if (d.inv_diag > 0) largest_change = std::max(largest_change, std::abs(df) / d.inv_diag);
     }
     if (!(largest_change > stop)) {
       out.converged = std::isfinite(largest_change);

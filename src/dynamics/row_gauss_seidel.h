@@ -5,6 +5,9 @@
 // The resting-force solve uses it for islands too large for pivoting (a pile: hundreds of boxes
 // touching in one island), and as the fallback when pivoting does not converge.
 //
+// The same iteration solves the velocity-level problem of the time-stepping model: there f is an
+// impulse, b a velocity, and the rows' targets are velocities.
+//
 // Rows are visited in index order (deterministic). Per row, with w = J_i a + b_i its acceleration:
 //   Normal  f <- max(0, f - w / A_ii)                           (push, never pull)
 //   Static  f <- mid(-mu f_n, f - w / A_ii, mu f_n)             (tangential acceleration 0 if it can)
@@ -41,8 +44,11 @@ struct RowGaussSeidelResult {
   bool converged = false;
 };
 
+// `start` (if it has one entry per row) is the first guess: the time-stepping model passes the
+// impulses of the last step (warm start), which leaves few sweeps for a pile at rest.
 RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<ContactRow>& rows,
                                           const Eigen::VectorXd& b, const std::vector<RowLimit>& limits,
-                                          const RowGaussSeidelSettings& settings = {});
+                                          const RowGaussSeidelSettings& settings = {},
+                                          const Eigen::VectorXd& start = {});
 
 }  // namespace tumble

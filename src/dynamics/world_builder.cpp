@@ -90,6 +90,8 @@ BuiltWorld buildWorld(const Scene& scene) {
   out.step.contact.regula_falsi = scene.simulation.regula_falsi;
   out.step.contact.max_direct_rows = scene.simulation.pivoting_max_rows;
   out.step.contact.tolerance_m = scene.simulation.contact_tolerance_m;
+  out.step.model = scene.simulation.contact_model;
+  out.step.time_stepping_sweeps = scene.simulation.time_stepping_sweeps;
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
   return out;

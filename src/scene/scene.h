@@ -19,6 +19,11 @@ struct SourceLocation {
 
 enum class ShapeKind { Mesh, Box, Sphere, Plane };
 enum class Integrator { SemiImplicitEuler, Rk4 };
+// How contacts are handled (DESIGN.md, "other contact models"):
+//   Baraff        event-driven: back-step to each first contact, Newton impulses, resting-force LCP
+//   TimeStepping  Moreau / Stewart-Trinkle: one velocity-level impulse problem per step, solved by
+//                 warm-started Gauss-Seidel; no back-stepping (fast, first order in dt)
+enum class ContactModel { Baraff, TimeStepping };
 
 struct BodySpec {
   std::string name;
@@ -80,6 +85,8 @@ struct SimulationSpec {
   bool regula_falsi = false;                           // contact time search: bisection or secant
   int pivoting_max_rows = 256;                         // larger resting islands: Gauss-Seidel
   double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
+  ContactModel contact_model = ContactModel::Baraff;
+  int time_stepping_sweeps = 30;                       // Gauss-Seidel sweeps per step at most
 };
 
 struct Scene {

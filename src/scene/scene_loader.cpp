@@ -61,6 +61,10 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
   sim.regula_falsi = readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
   sim.pivoting_max_rows = in.integer("pivoting_max_rows", sim.pivoting_max_rows, 0, 100000);
   sim.contact_tolerance_m = in.number("contact_tolerance_m", sim.contact_tolerance_m, {1e-9, 1e-2});
+  sim.contact_model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"}) == "baraff"
+                          ? ContactModel::Baraff
+                          : ContactModel::TimeStepping;
+  sim.time_stepping_sweeps = in.integer("time_stepping_sweeps", sim.time_stepping_sweeps, 1, 100000);
   // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
   // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
   // Without dt_s the step is the one nearest 1/240 s that divides the frame interval.

@@ -38,8 +38,10 @@ double worldPenetration(const World& world) {
 }
 
 SceneRun runScene(const std::string& name, double seconds,
-                  const std::function<void(const World&)>& on_step, int penetration_every) {
+                  const std::function<void(const World&)>& on_step, int penetration_every,
+                  const std::function<void(Scene&)>& edit) {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + name + ".json");
+  if (edit) edit(scene);
   setDuration(scene, seconds);
   scene.render.frames += 1;   // frame k is at (k-1)/fps: one more frame reaches `seconds`
   BuiltWorld built = buildWorld(scene);

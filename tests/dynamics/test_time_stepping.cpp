@@ -1,0 +1,165 @@
+// The time-stepping contact model (simulation.contact_model = "time_stepping") on the benchmark
+// scenes, against closed forms. It is first order in dt, so its bounds are looser than the Baraff
+// model's where the step shows; each says where it came from. Small islands are solved exactly
+// by pivoting (rest, stacks, the mass ratio stay exact); the pile uses Gauss-Seidel.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "contact_scene_runner.h"
+#include "dynamics/impulse_memory.h"
+#include "dynamics/world_builder.h"
+#include "scene/scene_loader.h"
+
+using namespace tumble;
+using tumble::test::runScene;
+
+namespace {
+
+void timeStepping(Scene& scene) { scene.simulation.contact_model = ContactModel::TimeStepping; }
+
+const BodySample& last(const test::SceneRun& run, int body) { return run.trajectory.frames.back()[body]; }
+const BodySample& first(const test::SceneRun& run, int body) { return run.trajectory.frames.front()[body]; }
+
+}  // namespace
+
+TEST_CASE("time stepping: the dropped cube bounces to 0.75 m within 1 % and never spins", "[contact][time_stepping]") {
+  double apex = 0, max_w = 0;
+  bool rising = false, done = false;
+  runScene("cube_drop", 2, [&](const World& w) {
+    const RigidBody& cube = w.bodies[1];
+    max_w = std::max(max_w, cube.angularVelocity().norm());
+    if (cube.velocity().z() > 0.05) rising = true;
+    if (rising && !done) apex = std::max(apex, cube.x.z());
+    if (rising && cube.velocity().z() <= 0) done = true;
+  }, 1, timeStepping);
+  // The bounce e u is given one step after the landing the speculative margin closed, from the
+  // approach speed before it: off by about g dt / u (1 %) at most; 0.748 m measured at 1/240 s.
+  CHECK(std::abs(apex - 0.75) < 0.01 * 0.75);
+  // The four corners are one island, pivoted exactly: symmetric impulses, no spin.
+  CHECK(max_w < 1e-9);
+}
+
+TEST_CASE("time stepping: a cube on the ground does not move or sink", "[contact][time_stepping]") {
+  auto run = runScene("rest", 10, {}, 1, timeStepping);
+  // Exact pivoting holds the velocity at zero: the bounds are the Baraff model's (rounding).
+  CHECK(run.max_penetration < 1e-6);
+  CHECK((last(run, 1).x - first(run, 1).x).norm() < 1e-6);
+  CHECK(last(run, 1).v.norm() < 1e-9);
+}
+
+TEST_CASE("time stepping: sliding down the incline follows symplectic Euler's closed form", "[contact][time_stepping]") {
+  auto run = runScene("incline_slide", 2, {}, 1, timeStepping);
+  // Constant acceleration a under symplectic Euler gives x_n = a dt^2 n (n + 1) / 2 exactly,
+  // i.e. a t^2 / 2 + a dt t / 2; Coulomb friction is exact along the pyramid's axes. 1e-9 m is
+  // rounding over 480 steps.
+  const double a = 9.81 * (0.5 - 0.3 * std::cos(M_PI / 6)), t = 2, dt = 1.0 / 240;
+  CHECK(std::abs(-last(run, 1).x.x() - (0.5 * a * t * t + 0.5 * a * dt * t)) < 1e-9);
+  CHECK(last(run, 1).w.norm() < 1e-9);
+}
+
+TEST_CASE("time stepping: the cube sticks on the incline when mu > tan 30", "[contact][time_stepping]") {
+  auto run = runScene("incline_stick", 2, {}, 1, timeStepping);
+  CHECK((last(run, 1).x - first(run, 1).x).norm() < 1e-9);
+}
+
+TEST_CASE("time stepping: 1000:1 mass ratio stays stacked without penetrating", "[contact][time_stepping]") {
+  auto run = runScene("mass_ratio", 5, {}, 1, timeStepping);
+  // The two-box island is pivoted exactly, so the issue's Baraff bounds hold (Gauss-Seidel alone
+  // lets the heavy box crush the light one: 0.5 m, as Bullet's 0.14 m).
+  CHECK(run.max_penetration < 1e-5);
+  CHECK(std::abs(last(run, 2).x.z() - 1.5) < 1e-5);
+  CHECK(last(run, 2).x.head<2>().norm() < 1e-5);
+}
+
+TEST_CASE("time stepping: a stack of 10 stands at 1/60 s", "[contact][time_stepping]") {
+  auto run = runScene("stack10", 10, {}, 1, [](Scene& s) {
+    timeStepping(s);
+    s.simulation.steps_per_frame = 1;   // 30 fps: dt = 1/30 s would be too coarse; 1/60 s below
+    s.render.fps = 60;
+    s.simulation.dt_s = 1.0 / 60;
+  });
+  const int top = static_cast<int>(run.trajectory.body_names.size()) - 1;
+  // Pivoted exactly (120 rows): nothing moves beyond rounding, at a step where Gauss-Seidel
+  // (30 sweeps) lets it fall.
+  CHECK(run.max_penetration < 1e-6);
+  CHECK((last(run, top).x - first(run, top).x).norm() < 1e-6);
+}
+
+TEST_CASE("time stepping: no cube passes through a 1 cm wall at 100 m/s", "[contact][time_stepping]") {
+  auto run = runScene("tunnel", 0.2, {}, 1, timeStepping);
+  for (std::size_t j = 1; j < run.trajectory.body_names.size(); ++j) {
+    INFO(run.trajectory.body_names[j]);
+    CHECK(last(run, static_cast<int>(j)).x.x() < 5.0);
+  }
+}
+
+TEST_CASE("time stepping: the pile by Gauss-Seidel lies in the bin after 3 s, under 1e-3 m deep", "[contact][time_stepping]") {
+  double deepest_late = 0;
+  auto run = runScene("pile", 3, [&](const World& w) {
+    // the last half second, every 30 steps (worldPenetration tests every pair by SAT: costly)
+    if (w.time > 2.5 && std::lround(w.time * 240) % 30 == 0)
+      deepest_late = std::max(deepest_late, test::worldPenetration(w));
+  }, 1000000, [](Scene& s) {
+    timeStepping(s);
+    s.simulation.pivoting_max_rows = 0;   // every island by Gauss-Seidel: the fast setting for piles
+  });
+  // The pile test's bound (issue 3). While the pieces land (0.3-0.7 s) pairs overlap by up to
+  // 3 cm for a step or two (a corner rotating in that the start-of-step contacts did not hold),
+  // which projection then removes; measured here: 5.6e-4 m at the end of the benchmark's 5 s.
+  INFO("deepest overlap in the last 0.5 s " << deepest_late << " m, at the end " << run.max_penetration << " m");
+  CHECK(deepest_late < 1e-3);
+  CHECK(run.max_penetration < 1e-3);
+  World start = buildWorld(loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/pile.json")).world;
+  const std::vector<BodySample>& end = run.trajectory.frames.back();
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    if (start.bodies[i].is_static) continue;
+    INFO(run.trajectory.body_names[i]);
+    CHECK(std::abs(end[i].x.x()) < 2.4);   // the bin's inside: walls 0.2 m thick centred at +-2.5 m
+    CHECK(std::abs(end[i].x.y()) < 2.4);
+    CHECK(end[i].x.z() > 0);
+  }
+}
+
+TEST_CASE("time stepping: the same scene gives bit-identical trajectories", "[contact][time_stepping]") {
+  auto edit = [](Scene& s) {
+    timeStepping(s);
+    s.simulation.pivoting_max_rows = 0;
+  };
+  auto one = runScene("pile", 0.5, {}, 1000000, edit);
+  auto two = runScene("pile", 0.5, {}, 1000000, edit);
+  REQUIRE(one.trajectory.frames.size() == two.trajectory.frames.size());
+  for (std::size_t f = 0; f < one.trajectory.frames.size(); ++f)
+    for (std::size_t b = 0; b < one.trajectory.frames[f].size(); ++b) {
+      CHECK(one.trajectory.frames[f][b].x == two.trajectory.frames[f][b].x);
+      CHECK(one.trajectory.frames[f][b].q.coeffs() == two.trajectory.frames[f][b].q.coeffs());
+    }
+}
+
+TEST_CASE("impulse memory: a contact is found again across its normal, not beyond the radius", "[contact][time_stepping]") {
+  World world;
+  world.bodies.resize(2);
+  world.bodies[0].x = {1, 2, 3};
+  world.bodies[0].q = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  Contact c;
+  c.a = 0;
+  c.b = 1;
+  c.point = {1.5, 2, 3};
+  c.normal = Eigen::Vector3d::UnitX();
+  ImpulseRecord rec;
+  rec.a = 0;
+  rec.b = 1;
+  rec.local = ImpulseMemory::localPoint(world, c);
+  rec.impulse = {7, 0, 0};
+  ImpulseMemory memory;
+  memory.replace({rec});
+  Contact moved = c;
+  moved.point += Eigen::Vector3d(0.05, 0.001, 0);   // 5 cm along the normal, 1 mm across
+  REQUIRE(memory.find(world, moved, 2e-3) != nullptr);
+  CHECK(memory.find(world, moved, 2e-3)->impulse.x() == 7);
+  moved.point.y() += 0.002;                         // now 3 mm across
+  CHECK(memory.find(world, moved, 2e-3) == nullptr);
+  Contact other = c;
+  other.b = 0;                                      // another pair of bodies
+  CHECK(memory.find(world, other, 1) == nullptr);
+}
