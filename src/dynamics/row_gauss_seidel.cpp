@@ -30,14 +30,20 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     out.converged = true;
     return out;
   }
+  // Buffers kept between calls: a pile's rows take over 128 kB, which glibc would map and unmap
+  // on every call (a page fault per page: a third of the time-stepping model's step, measured).
+  thread_local std::vector<Eigen::Matrix3d> inv_inertia;
+  thread_local std::vector<char> used;
+  thread_local std::vector<Row> data;
+  thread_local std::vector<Eigen::Vector3d> lin, ang;
   const std::size_t bodies = world.bodies.size();
-  std::vector<Eigen::Matrix3d> inv_inertia(bodies, Eigen::Matrix3d::Zero());
-  std::vector<char> used(bodies, 0);
+  inv_inertia.assign(bodies, Eigen::Matrix3d::Zero());
+  used.assign(bodies, 0);
   for (const ContactRow& r : rows) used[r.a] = used[r.b] = 1;
   for (std::size_t k = 0; k < bodies; ++k)
     if (used[k]) inv_inertia[k] = inverseInertiaWorld(world.bodies[k]);
 
-  std::vector<Row> data(n);
+  data.resize(n);
   for (int i = 0; i < n; ++i) {
     const ContactRow& r = rows[i];
     Row& d = data[i];
@@ -54,8 +60,8 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     d.inv_diag = diag > 0 ? 1 / diag : 0;   // a row between two static bodies takes no force
   }
   // Acceleration of each body from the forces so far: linear and angular parts.
-  std::vector<Eigen::Vector3d> lin(bodies, Eigen::Vector3d::Zero());
-  std::vector<Eigen::Vector3d> ang(bodies, Eigen::Vector3d::Zero());
+  lin.assign(bodies, Eigen::Vector3d::Zero());
+  ang.assign(bodies, Eigen::Vector3d::Zero());
   auto push = [&](const Row& d, double df) {
     lin[d.a] -= (df * d.inv_mass_a) * d.dir;
     lin[d.b] += (df * d.inv_mass_b) * d.dir;

@@ -103,14 +103,31 @@ void TimeStepper::applyContactImpulses(World& world, const std::vector<Contact>&
 
   std::vector<Eigen::Vector3d> impulse(m, Eigen::Vector3d::Zero());   // on B, world axes
   std::vector<double> normal_impulse(m, 0);
-  for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
+  // Each body's velocity once (the rows need it twice each; computing omega costs a rotation).
+  velocity_.resize(world.bodies.size());
+  spin_.resize(world.bodies.size());
+  for (std::size_t k = 0; k < world.bodies.size(); ++k) {
+    const RigidBody& body = world.bodies[k];
+    velocity_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.velocity();
+    spin_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.angularVelocity();
+  }
+  auto rowVelocityNow = [&](const ContactRow& r) {
+    return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
+  };
+  // Without pivoting every contact goes to Gauss-Seidel; splitting into islands first would only
+  // cost time (each island's rows touch only its own bodies either way).
+  const bool pivot_any = settings.contact.max_direct_rows > 0;
+  std::vector<std::vector<const Contact*>> groups;
+  if (pivot_any) groups = splitIntoIslands(world, all);
+  else if (m > 0) groups.push_back(all);
+  for (const std::vector<const Contact*>& island : groups) {
     // Small islands are solved exactly by pivoting (a heavy box on a light one needs it: Gauss-
     // Seidel converges at a rate set by the mass ratio); large ones (a pile) by Gauss-Seidel.
-    const bool pivoting = 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
+    const bool pivoting = pivot_any && 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
     IslandRows rows = rowsOf(world, island, want, last, contacts.data(), pivoting);
     const int n = static_cast<int>(rows.lcp.rows.size());
     Eigen::VectorXd b(n);
-    for (int r = 0; r < n; ++r) b[r] = rowVelocity(world, rows.lcp.rows[r]) - rows.target[r];
+    for (int r = 0; r < n; ++r) b[r] = rowVelocityNow(rows.lcp.rows[r]) - rows.target[r];
     Eigen::VectorXd f;
     if (pivoting) {
       rows.lcp.problem.b = b;

@@ -42,6 +42,7 @@ class TimeStepper {
 
  private:
   ImpulseMemory memory_;
+  std::vector<Eigen::Vector3d> velocity_, spin_;   // per body, this step (reused buffers)
 };
 
 // How far two bodies can close within a step (m): the speculative margin the detector needs so that
