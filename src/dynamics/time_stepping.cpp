@@ -114,16 +114,12 @@ void TimeStepper::applyContactImpulses(World& world, const std::vector<Contact>&
   auto rowVelocityNow = [&](const ContactRow& r) {
     return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
   };
-  // Without pivoting every contact goes to Gauss-Seidel; splitting into islands first would only
-  // cost time (each island's rows touch only its own bodies either way).
-  const bool pivot_any = settings.contact.max_direct_rows > 0;
-  std::vector<std::vector<const Contact*>> groups;
-  if (pivot_any) groups = splitIntoIslands(world, all);
-  else if (m > 0) groups.push_back(all);
-  for (const std::vector<const Contact*>& island : groups) {
+  // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
+  // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
+  for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
     // Small islands are solved exactly by pivoting (a heavy box on a light one needs it: Gauss-
     // Seidel converges at a rate set by the mass ratio); large ones (a pile) by Gauss-Seidel.
-    const bool pivoting = pivot_any && 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
+    const bool pivoting = 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
     IslandRows rows = rowsOf(world, island, want, last, contacts.data(), pivoting);
     const int n = static_cast<int>(rows.lcp.rows.size());
     Eigen::VectorXd b(n);

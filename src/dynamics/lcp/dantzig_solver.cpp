@@ -1,6 +1,7 @@
 #include "dynamics/lcp/dantzig_solver.h"
 
 #include "dynamics/lcp/boxed_pivoting.h"
+#include "dynamics/lcp/friction_fixed_point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,10 +73,22 @@ LcpResult solveDantzig(const LcpProblem& p, const DantzigSettings& s) {
   const bool friction = hasFriction(p);
   if (friction) effectiveBounds(p, r.f, lo, hi);  // f = 0: friction bounds [0, 0]
   r.status = solveFixedBounds(p, lo, hi, s, r);
+  std::vector<Bound> last_set;
   for (int pass = 1; friction && r.status == LcpStatus::Solved; ++pass) {
     Eigen::VectorXd nlo, nhi;
     effectiveBounds(p, r.f, nlo, nhi);
     if (boundsConverged(p, hi, nhi, s.friction_tolerance)) break;
+    // Two passes with one active set: the rest of the passes would only converge geometrically
+    // to the fixed point of that set, which one linear solve gives (friction_fixed_point.h).
+    std::vector<Bound> set = activeSet(r.f, lo, hi);
+    if (set == last_set) {
+      if (std::optional<Eigen::VectorXd> exact = solveFrictionFixedPoint(p, set, lo, hi)) {
+        r.f = *exact;
+        ++r.friction_passes;
+        break;
+      }
+    }
+    last_set = std::move(set);
     if (pass > s.max_friction_passes) {
       r.status = LcpStatus::MaxIterations;
       break;
