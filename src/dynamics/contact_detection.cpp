@@ -31,10 +31,14 @@ ContactDetector::ContactDetector(const World& world) {
   has_pairs_ = moving > 0 && (moving + fixed > 1 || !planes_.empty());
 }
 
-void ContactDetector::updateBoxes(const World& world, double margin) {
-  for (std::size_t i = 0; i < pieces_.size(); ++i)
-    broad_.setBox(static_cast<int>(i),
-                  aabbOf(*pieces_[i].shape, poseOf(world.bodies[pieces_[i].body]), margin));
+void ContactDetector::updateBoxes(const World& world, double margin, const std::vector<double>* reach) {
+  // Two boxes grown by m_a and m_b overlap when the pieces are closer than m_a + m_b: each grows by
+  // half the base margin and its body's whole reach.
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const int body = pieces_[i].body;
+    const double grow = reach ? 0.5 * margin + (*reach)[body] : margin;
+    broad_.setBox(static_cast<int>(i), aabbOf(*pieces_[i].shape, poseOf(world.bodies[body]), grow));
+  }
 }
 
 void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
@@ -59,18 +63,21 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
 }
 
 void ContactDetector::detect(const World& world, const ContactSettings& settings,
-                             std::vector<Contact>& out, std::vector<PiecePair>* pairs) {
+                             std::vector<Contact>& out, std::vector<PiecePair>* pairs,
+                             const std::vector<double>* reach) {
   out.clear();
   if (pairs) pairs->clear();
   if (!has_pairs_) return;
-  updateBoxes(world, settings.margin_m);
+  updateBoxes(world, settings.margin_m, reach);
   broad_.findPairs(candidates_);
+  auto reachOf = [&](int body) { return reach ? (*reach)[body] : 0.0; };
   for (const ProxyPair& c : candidates_) {
     PiecePair key{c.a, c.b};
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
+    const double margin = settings.margin_m + reachOf(pa.body) + reachOf(pb.body);
     if (collide(pa.hull, poseOf(world.bodies[pa.body]), pb.hull, poseOf(world.bodies[pb.body]),
-                settings.margin_m, caches_[key], manifold_))
+                margin, caches_[key], manifold_))
       addPairContacts(world, key, manifold_, out, pairs);
   }
   for (int plane : planes_) {
@@ -78,7 +85,8 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
       const RigidBody& body = world.bodies[pieces_[i].body];
       if (body.is_static) continue;
-      if (collideGround(*pieces_[i].shape, poseOf(body), height, settings.margin_m, manifold_))
+      const double margin = settings.margin_m + reachOf(pieces_[i].body);
+      if (collideGround(*pieces_[i].shape, poseOf(body), height, margin, manifold_))
         addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
     }
   }

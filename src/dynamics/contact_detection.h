@@ -28,9 +28,11 @@ class ContactDetector {
   explicit ContactDetector(const World& world);
 
   // All contacts of the world in its current state (pairs closer than settings.margin_m), in a
-  // deterministic order; `pairs` (optional) receives the piece pair of each contact.
+  // deterministic order; `pairs` (optional) receives the piece pair of each contact. `reach`
+  // (optional, m per body) widens the margin of each pair by how far its two bodies can travel:
+  // the time-stepping model's speculative contacts, without widening every pair by the fastest.
   void detect(const World& world, const ContactSettings& settings, std::vector<Contact>& out,
-              std::vector<PiecePair>* pairs = nullptr);
+              std::vector<PiecePair>* pairs = nullptr, const std::vector<double>* reach = nullptr);
   // The largest penetration depth among the given piece pairs in the world's current state
   // (negative when all are separated): what bisection evaluates.
   double maxDepth(const World& world, const std::vector<PiecePair>& pairs);
@@ -43,7 +45,7 @@ class ContactDetector {
     const ConvexPiece* shape;
     CollisionHull hull;
   };
-  void updateBoxes(const World& world, double margin);
+  void updateBoxes(const World& world, double margin, const std::vector<double>* reach);
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
                        std::vector<Contact>& out, std::vector<PiecePair>* pairs) const;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 #include "dynamics/gravity.h"
 #include "dynamics/time_of_impact.h"
@@ -196,17 +197,34 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
   // share one depth, and pushing once per corner would open a gap of three depths, leaving the
   // face unsupported (no resting force across a gap) for the next sub-step.
   const double tol = settings.contact.tolerance_m;
-  std::vector<std::pair<std::pair<int, int>, std::size_t>> deepest;   // (bodies, contact): first-seen order
-  for (std::size_t i = 0; i < contacts_now_.size(); ++i) {
-    const Contact& c = contacts_now_[i];
-    if (c.depth <= tol) continue;
-    std::pair<int, int> bodies{c.a, c.b};
-    auto it = std::find_if(deepest.begin(), deepest.end(), [&](const auto& d) { return d.first == bodies; });
-    if (it == deepest.end()) deepest.push_back({bodies, i});
-    else if (c.depth > contacts_now_[it->second].depth) it->second = i;
+  // Contacts grouped by pair of bodies (sorted, stable: within a pair in detection order), so
+  // that finding each pair's deepest point and its other points is linear, not quadratic, in a pile.
+  std::vector<std::size_t> order(contacts_now_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto pairOf = [&](std::size_t i) { return std::make_pair(contacts_now_[i].a, contacts_now_[i].b); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return pairOf(x) < pairOf(y); });
+  struct Push {
+    std::size_t first_seen, deepest, begin, end;   // begin/end: the pair's range in `order`
+  };
+  std::vector<Push> pushes;
+  for (std::size_t k = 0; k < order.size();) {
+    std::size_t end = k;
+    Push p{SIZE_MAX, SIZE_MAX, k, 0};
+    for (; end < order.size() && pairOf(order[end]) == pairOf(order[k]); ++end) {
+      const std::size_t i = order[end];
+      if (contacts_now_[i].depth <= tol) continue;
+      p.first_seen = std::min(p.first_seen, i);
+      if (p.deepest == SIZE_MAX || contacts_now_[i].depth > contacts_now_[p.deepest].depth) p.deepest = i;
+    }
+    p.end = end;
+    if (p.deepest != SIZE_MAX) pushes.push_back(p);
+    k = end;
   }
-  for (const auto& [bodies, index] : deepest) {
-    const Contact c = contacts_now_[index];   // a copy: the loop below changes the depths
+  // Pairs are pushed in the order their first too-deep point was detected (deterministic, and the
+  // order the pushes had before they were grouped).
+  std::sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.first_seen < y.first_seen; });
+  for (const Push& p : pushes) {
+    const Contact c = contacts_now_[p.deepest];   // a copy: the loop below changes the depths
     RigidBody& A = world.bodies[c.a];
     RigidBody& B = world.bodies[c.b];
     double wa = A.inv_mass, wb = B.inv_mass;
@@ -218,8 +236,10 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
     // points moved apart by the push along their own normals, and their depths follow.
     if (model_ == ContactModel::TimeStepping) {
       const Eigen::Vector3d moved = c.normal * push;
-      for (Contact& other : contacts_now_)
-        if (other.a == c.a && other.b == c.b) other.depth -= other.normal.dot(moved);
+      for (std::size_t k = p.begin; k < p.end; ++k) {
+        Contact& other = contacts_now_[order[k]];
+        other.depth -= other.normal.dot(moved);
+      }
     }
     ++counters_.projections;
     contacts_fresh_ = false;

@@ -87,6 +87,7 @@ class Pipeline {
   BodySnapshot snapshot_;
   double min_thickness_ = 0;
   std::vector<double> body_radius_;
+  std::vector<double> reach_;   // time stepping: how far each body can travel in the step
   std::vector<StageTime> profile_;
   PipelineCounters counters_;
 };

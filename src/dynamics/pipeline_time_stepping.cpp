@@ -13,9 +13,10 @@ void Pipeline::timeStep(World& world, const StepSettings& settings) {
   ++counters_.substeps;
   const double dt = settings.dt;
   if (has_contacts_) {
-    ContactSettings detect = settings.contact;
-    detect.margin_m = std::max(detect.margin_m, speculativeMargin(world, body_radius_, dt));
-    timed(Detect, [&] { detector_.detect(world, detect, contacts_now_, &pairs_now_); });
+    timed(Detect, [&] {
+      bodyReach(world, body_radius_, dt, reach_);
+      detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
+    });
     timed(Correct, [&] { correctPenetration(world, settings); });
   }
   // Approach speeds before gravity's impulse: the speed an impact reverses.

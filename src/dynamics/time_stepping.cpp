@@ -10,15 +10,13 @@
 
 namespace tumble {
 
-double speculativeMargin(const World& world, const std::vector<double>& body_radius, double dt) {
-  double fastest = 0;
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach) {
+  reach.assign(world.bodies.size(), 0.0);
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& b = world.bodies[i];
     if (b.is_static) continue;
-    double speed = b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i];
-    fastest = std::max(fastest, speed);
+    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
   }
-  return 2 * fastest * dt;
 }
 
 namespace {

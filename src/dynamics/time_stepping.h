@@ -45,9 +45,9 @@ class TimeStepper {
   std::vector<Eigen::Vector3d> velocity_, spin_;   // per body, this step (reused buffers)
 };
 
-// How far two bodies can close within a step (m): the speculative margin the detector needs so that
-// every pair that can touch during the step is a contact at its start. Twice the largest point
-// speed of any moving body (|v| + |g| dt + |w| r) times dt.
-double speculativeMargin(const World& world, const std::vector<double>& body_radius, double dt);
+// How far each body's points can travel within a step (m; 0 for static bodies): the speculative
+// margin the detector adds for it, so that every pair that can touch during the step is a contact
+// at its start. (|v| + |g| dt + |w| r) dt, with r the body's radius about its centre of mass.
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach);
 
 }  // namespace tumble
