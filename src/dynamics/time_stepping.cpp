@@ -24,24 +24,20 @@ namespace {
 // The rows of one island in buildContactLcp's layout (normal, then two tangents if mu > 0), with
 // each row's velocity target and last step's impulse along it.
 struct IslandRows {
-  ContactLcp lcp;                // rows, normal_row; A and bounds only when solved by pivoting
+  ContactLcp lcp;                // rows and normal_row only (A is formed only to pivot)
   Eigen::VectorXd target, start;
 };
 
 IslandRows rowsOf(const World& world, const std::vector<const Contact*>& island, const std::vector<double>& want,
-                  const std::vector<const ImpulseRecord*>& last, const Contact* first, bool pivoting) {
+                  const std::vector<const ImpulseRecord*>& last, const Contact* first) {
   IslandRows out;
-  if (pivoting) {
-    out.lcp = buildContactLcp(world, island, std::vector<char>(island.size(), 1));
-  } else {
-    for (const Contact* c : island) {
-      out.lcp.normal_row.push_back(static_cast<int>(out.lcp.rows.size()));
-      out.lcp.rows.push_back(rowAlong(world, *c, c->normal));
-      if (c->friction <= 0) continue;
-      Eigen::Vector3d t1, t2;
-      tangentsOf(c->normal, t1, t2);
-      for (const Eigen::Vector3d& t : {t1, t2}) out.lcp.rows.push_back(rowAlong(world, *c, t));
-    }
+  for (const Contact* c : island) {
+    out.lcp.normal_row.push_back(static_cast<int>(out.lcp.rows.size()));
+    out.lcp.rows.push_back(rowAlong(world, *c, c->normal));
+    if (c->friction <= 0) continue;
+    Eigen::Vector3d t1, t2;
+    tangentsOf(c->normal, t1, t2);
+    for (const Eigen::Vector3d& t : {t1, t2}) out.lcp.rows.push_back(rowAlong(world, *c, t));
   }
   const int n = static_cast<int>(out.lcp.rows.size());
   out.target = Eigen::VectorXd::Zero(n);
@@ -59,7 +55,8 @@ IslandRows rowsOf(const World& world, const std::vector<const Contact*>& island,
 }
 
 Eigen::VectorXd solveByGaussSeidel(const World& world, const IslandRows& rows, const std::vector<const Contact*>& island,
-                                   const Eigen::VectorXd& b, int max_sweeps, ContactSolveStats& stats) {
+                                   const Eigen::VectorXd& b, int max_sweeps, double tolerance,
+                                   ContactSolveStats& stats, bool& converged) {
   const int n = static_cast<int>(rows.lcp.rows.size());
   std::vector<RowLimit> limits(n);
   for (std::size_t k = 0; k < island.size(); ++k) {
@@ -69,11 +66,12 @@ Eigen::VectorXd solveByGaussSeidel(const World& world, const IslandRows& rows, c
   }
   RowGaussSeidelSettings gs;
   gs.max_sweeps = max_sweeps;
-  gs.tolerance = 1e-6;
+  gs.tolerance = tolerance;
   RowGaussSeidelResult solved = solveRowsGaussSeidel(world, rows.lcp.rows, b, limits, gs, rows.start);
   ++stats.iterative_islands;
   stats.sweeps += solved.sweeps;
   if (!solved.converged) ++stats.unconverged_sweeps;
+  converged = solved.converged;
   return solved.f;
 }
 
@@ -115,23 +113,29 @@ void TimeStepper::applyContactImpulses(World& world, const std::vector<Contact>&
   // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
   // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
   for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
-    // Small islands are solved exactly by pivoting (a heavy box on a light one needs it: Gauss-
-    // Seidel converges at a rate set by the mass ratio); large ones (a pile) by Gauss-Seidel.
-    const bool pivoting = 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
-    IslandRows rows = rowsOf(world, island, want, last, contacts.data(), pivoting);
+    // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
+    // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
+    // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
+    // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
+    IslandRows rows = rowsOf(world, island, want, last, contacts.data());
     const int n = static_cast<int>(rows.lcp.rows.size());
     Eigen::VectorXd b(n);
     for (int r = 0; r < n; ++r) b[r] = rowVelocityNow(rows.lcp.rows[r]) - rows.target[r];
-    Eigen::VectorXd f;
-    if (pivoting) {
-      rows.lcp.problem.b = b;
-      lcp::LcpResult r = solveContactLcp(rows.lcp.problem, stats);
+    // An island that may be pivoted must converge to near rounding (a flat landing solved only to
+    // 1e-6 leaves its four corners unequal, and the cube spins at 3e-4 rad/s).
+    const bool small = 3 * island.size() <= static_cast<std::size_t>(settings.contact.max_direct_rows);
+    bool converged = false;
+    Eigen::VectorXd f = solveByGaussSeidel(world, rows, island, b, settings.time_stepping_sweeps,
+                                           small ? 1e-12 : 1e-6, stats, converged);
+    if (!converged && small) {
+      ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
+      exact.problem.b = b;
+      lcp::LcpResult r = solveContactLcp(exact.problem, stats);
       const bool usable = r.status == lcp::LcpStatus::Solved ||
                           (r.f.allFinite() && r.residual.complementarity <= 1e-6 * (b.lpNorm<Eigen::Infinity>() + 1));
       if (usable) f = r.f;
       else ++stats.iterative_fallbacks;
     }
-    if (f.size() != n) f = solveByGaussSeidel(world, rows, island, b, settings.time_stepping_sweeps, stats);
     applyAlongRows(world, rows.lcp.rows, f);
     for (std::size_t k = 0; k < island.size(); ++k) {
       const std::size_t i = static_cast<std::size_t>(island[k] - contacts.data());

@@ -36,8 +36,10 @@ TEST_CASE("time stepping: the dropped cube bounces to 0.75 m within 1 % and neve
   // The bounce e u is given one step after the landing the speculative margin closed, from the
   // approach speed before it: off by about g dt / u (1 %) at most; 0.748 m measured at 1/240 s.
   CHECK(std::abs(apex - 0.75) < 0.01 * 0.75);
-  // The four corners are one island, pivoted exactly: symmetric impulses, no spin.
-  CHECK(max_w < 1e-9);
+  // The four corners are one island, solved by Gauss-Seidel to 1e-12 of its largest velocity
+  // term or else pivoted exactly: the corners' impulses agree to that accuracy, and the spin it can
+  // leave is ~1e-9 rad/s (1.0e-9 measured; Bullet spins at 3.3 rad/s here).
+  CHECK(max_w < 1e-8);
 }
 
 TEST_CASE("time stepping: a cube on the ground does not move or sink", "[contact][time_stepping]") {
