@@ -157,6 +157,10 @@ bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView&
   const double sat_depth = -std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
   double deepest = -INFINITY;
   for (const ContactPoint& cp : m.points) deepest = std::max(deepest, cp.depth);
+  // Pairs apart within the margin are held to it too: the pipeline calls a contact touching when its
+  // depth is above -1e-6 m, and a face saying "0.1 mm apart" of a pair the SAT sees touching would
+  // drop its resting force. (Exempting pairs that both call apart raised the pile's
+  // sampled penetration from 1.1 to 6.8 mm.)
   const double tol = narrow::kDepthAgreement * std::min(p.a.hull->size, p.b.hull->size);
   return std::abs(deepest - sat_depth) <= tol;
 }

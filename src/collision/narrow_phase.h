@@ -9,7 +9,8 @@
 // The manifold is built by clipping the incident face against the reference face (face contacts)
 // or is the single closest point of two edges (edge contacts), then reduced to <= 4 points.
 // Its deepest point is as deep as separation() says, within 1e-9 of the smaller piece's size, for
-// every overlapping pair: back-stepping and the projection see penetration only through it.
+// every overlapping pair, and it never reports a penetration for a pair separation() sees apart:
+// back-stepping and the projection see penetration only through it.
 #pragma once
 
 #include <Eigen/Core>
