@@ -8,15 +8,32 @@ namespace tumble::narrow {
 
 namespace {
 
-// The face of `piece` whose normal is most anti-parallel to n: the face that meets n's face.
-int incidentFace(const HullView& piece, const Eigen::Vector3d& n) {
+// The vertex of `piece` deepest along -n (the first of equal ones: deterministic).
+int deepestVertex(const HullView& piece, const Eigen::Vector3d& n) {
   int best = 0;
-  double lowest = INFINITY;
-  for (int f = 0; f < piece.faceCount(); ++f) {
-    const double d = piece.normals[f].dot(n);
-    if (d < lowest) lowest = d, best = f;
+  for (int v = 1; v < piece.vertexCount(); ++v) {
+    if (n.dot(piece.vertices[v]) < n.dot(piece.vertices[best])) best = v;
   }
   return best;
+}
+
+// The face of `piece` that meets n's face: the most anti-parallel to n among the faces around the
+// piece's deepest vertex along n. The deepest vertex must be on it: when n is the axis of least
+// penetration that vertex lies inside the reference face's prism and is the manifold's deepest
+// point, with depth equal to the SAT depth. The most anti-parallel face of the whole piece need not
+// hold it (on a gem two faces on either side of a ridge can tie to 3 digits), and clipping the
+// wrong one reported a piece 29 mm deep as 6 mm deep, or as apart.
+int incidentFace(const HullView& piece, const Eigen::Vector3d& n, int deepest) {
+  int best = -1;
+  double lowest = INFINITY;
+  const std::vector<std::vector<int>>& faces = piece.hull->piece->faces;
+  for (int f = 0; f < piece.faceCount(); ++f) {
+    if (std::find(faces[f].begin(), faces[f].end(), deepest) == faces[f].end()) continue;
+    const double d = piece.normals[f].dot(n);
+    if (best < 0 || d < lowest) lowest = d, best = f;  // best < 0: a face even when n is NaN
+  }
+  assert(best >= 0);  // a closed hull's every vertex is on a face
+  return std::max(best, 0);
 }
 
 // One Sutherland-Hodgman pass: keeps the part of `in` with side . p <= offset + tol. A point
@@ -58,27 +75,20 @@ void clipToReference(const HullView& ref, int ref_face, Scratch& s) {
   }
 }
 
-// When clipping leaves nothing (the incident face's region misses the reference face, which can
-// happen when several incident faces are near ties), the deepest vertex still makes a contact.
-void deepestVertexFallback(const HullView& inc, const Eigen::Vector3d& n, Scratch& s) {
-  int best = 0;
-  for (int v = 1; v < inc.vertexCount(); ++v) {
-    if (n.dot(inc.vertices[v]) < n.dot(inc.vertices[best])) best = v;
-  }
-  s.poly.push_back({inc.vertices[best], 0x7e000000u + std::uint32_t(best)});
-}
-
 }  // namespace
 
 bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool ref_is_a,
                  double margin, ContactManifold& out) {
   Scratch& s = scratch();
   const Eigen::Vector3d n = ref.normals[ref_face];
-  const int inc_face = incidentFace(inc, n);
+  const int deepest = deepestVertex(inc, n);
+  const int inc_face = incidentFace(inc, n, deepest);
   s.poly.clear();
   for (int v : inc.hull->piece->faces[inc_face]) s.poly.push_back({inc.vertices[v], std::uint32_t(v)});
   clipToReference(ref, ref_face, s);
-  if (s.poly.empty()) deepestVertexFallback(inc, n, s);
+  // Nothing left only when the reference face was kept by the feature choice's hysteresis although
+  // the deepest vertex is outside its prism; the caller then checks the depth against the SAT.
+  if (s.poly.empty()) s.poly.push_back({inc.vertices[deepest], 0x7e000000u + std::uint32_t(deepest)});
 
   out.normal = ref_is_a ? n : Eigen::Vector3d(-n);
   out.points.clear();

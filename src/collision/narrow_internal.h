@@ -27,6 +27,10 @@ constexpr double kParallelSine = 1e-6;
 constexpr double kEdgeRelTolerance = 0.10;
 constexpr double kFaceRelTolerance = 0.02;
 constexpr double kAbsTolerance = 1e-3;
+// The manifold's deepest point must be as deep as the SAT says within this times size; a feature
+// kept by the tolerances above that misses it gives way to the least-penetration axis
+// (narrow_phase.cpp, agreesWithSat).
+constexpr double kDepthAgreement = 1e-9;
 
 // One piece as seen in the working frame (the frame of the piece with more vertices; the other is
 // transformed into it, so only the smaller one pays for the transform).
