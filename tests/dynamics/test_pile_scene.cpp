@@ -53,13 +53,13 @@ TEST_CASE("pile: the first second falls into the bin without a numerical fault",
   runPile(1);
 }
 
-// Known failure: during the first impacts (0.37-0.68 s) pairs of pieces overlap by up to 9 mm
-// at the end of a step (1.4 mm at the samples taken here, every 30 steps). The narrow phase's
-// manifold reports such a pair shallower than the separating-axis depth measured here, so neither
-// back-stepping nor the projection sees how deep it is (the pipeline counts some of these as
-// "impacts too deep to go back for"). Repeating the projection with fresh contacts (4 passes) left
-// 8.8 mm: the gap is in contact generation, not in the correction.
-TEST_CASE("pile: no penetration above 1e-3 m in the first second (reached: 1.4e-3 m)", "[contact][pile][!shouldfail]") {
+// Known failure: during the first impacts (0.37-0.68 s) pairs of pieces end steps overlapping by
+// 2-8 mm (1.1 mm at the samples taken here, every 30 steps). Since session 4 the narrow phase
+// reports such pairs at their separating-axis depth (it clipped against the wrong incident face
+// of hulls and kept hysteresis faces whose depth disagreed: tests/collision/test_manifold_depth.cpp),
+// so what is left is in the dynamics: the one-pass projection per pair (4 passes: 5.1 mm), and
+// pairs already touching at the start of a sub-step, which back-stepping does not watch.
+TEST_CASE("pile: no penetration above 1e-3 m in the first second (reached: 1.1e-3 m)", "[contact][pile][!shouldfail]") {
   CHECK(runPile(1).penetration < 1e-3);
 }
 
