@@ -11,7 +11,7 @@ struct StepSettings {
   Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
   ContactSettings contact;                        // detection margin, tolerances, thresholds
   ContactModel model = ContactModel::Baraff;      // event-driven, or velocity-level time stepping
-  int time_stepping_sweeps = 30;                  // Gauss-Seidel sweeps per step at most (TimeStepping)
+  int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
 };
 
 }  // namespace tumble

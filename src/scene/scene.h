@@ -86,7 +86,7 @@ struct SimulationSpec {
   int pivoting_max_rows = 256;                         // larger resting islands: Gauss-Seidel
   double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
   ContactModel contact_model = ContactModel::Baraff;
-  int time_stepping_sweeps = 30;                       // Gauss-Seidel sweeps per step at most
+  int time_stepping_sweeps = 200;                      // Gauss-Seidel sweeps per step at most
 };
 
 struct Scene {
