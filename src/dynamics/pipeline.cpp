@@ -262,7 +262,7 @@ std::vector<std::string> Pipeline::describe() const {
     if (apply_gravity_) lines.push_back("forces      gravity impulse on " + moving);
     if (has_contacts_)
       lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
-                      "warm-started Gauss-Seidel");
+                      "warm-started Gauss-Seidel; small islands it leaves unconverged pivoted exactly");
     lines.push_back(integrate + " (free motion with the new momenta)");
     if (!has_contacts_) lines.push_back("contacts    none needed: nothing in this scene can touch");
     return lines;
