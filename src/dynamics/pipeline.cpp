@@ -204,19 +204,18 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
   auto pairOf = [&](std::size_t i) { return std::make_pair(contacts_now_[i].a, contacts_now_[i].b); };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return pairOf(x) < pairOf(y); });
   struct Push {
-    std::size_t first_seen, deepest, begin, end;   // begin/end: the pair's range in `order`
+    std::size_t first_seen, deepest;
   };
   std::vector<Push> pushes;
   for (std::size_t k = 0; k < order.size();) {
     std::size_t end = k;
-    Push p{SIZE_MAX, SIZE_MAX, k, 0};
+    Push p{SIZE_MAX, SIZE_MAX};
     for (; end < order.size() && pairOf(order[end]) == pairOf(order[k]); ++end) {
       const std::size_t i = order[end];
       if (contacts_now_[i].depth <= tol) continue;
       p.first_seen = std::min(p.first_seen, i);
       if (p.deepest == SIZE_MAX || contacts_now_[i].depth > contacts_now_[p.deepest].depth) p.deepest = i;
     }
-    p.end = end;
     if (p.deepest != SIZE_MAX) pushes.push_back(p);
     k = end;
   }
@@ -224,7 +223,7 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
   // order the pushes had before they were grouped).
   std::sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.first_seen < y.first_seen; });
   for (const Push& p : pushes) {
-    const Contact c = contacts_now_[p.deepest];   // a copy: the loop below changes the depths
+    const Contact& c = contacts_now_[p.deepest];
     RigidBody& A = world.bodies[c.a];
     RigidBody& B = world.bodies[c.b];
     double wa = A.inv_mass, wb = B.inv_mass;
@@ -232,15 +231,6 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
     double push = c.depth - 0.5 * tol;
     A.x -= c.normal * (push * wa / (wa + wb));
     B.x += c.normal * (push * wb / (wa + wb));
-    // The time-stepping model goes on with these contacts without detecting again: the pair's
-    // points moved apart by the push along their own normals, and their depths follow.
-    if (model_ == ContactModel::TimeStepping) {
-      const Eigen::Vector3d moved = c.normal * push;
-      for (std::size_t k = p.begin; k < p.end; ++k) {
-        Contact& other = contacts_now_[order[k]];
-        other.depth -= other.normal.dot(moved);
-      }
-    }
     ++counters_.projections;
     contacts_fresh_ = false;
   }

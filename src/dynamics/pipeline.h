@@ -66,6 +66,8 @@ class Pipeline {
   double tunnellingBound(const World& world, double h) const;
   double backStep(World& world, const StepSettings& settings, double h);
   void correctPenetration(World& world, const StepSettings& settings);
+  void projectContacts(World& world, const StepSettings& settings);   // time stepping
+  static constexpr int kProjectionPasses = 8;
   template <typename F> void timed(Stage stage, F&& work) {
     auto start = std::chrono::steady_clock::now();
     work();
@@ -88,6 +90,7 @@ class Pipeline {
   double min_thickness_ = 0;
   std::vector<double> body_radius_;
   std::vector<double> reach_;   // time stepping: how far each body can travel in the step
+  std::vector<Eigen::Vector3d> moved_;   // time stepping: each body's displacement by projection
   std::vector<StageTime> profile_;
   PipelineCounters counters_;
 };
