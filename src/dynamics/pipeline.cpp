@@ -111,11 +111,15 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
   if (taken == h) {
     std::swap(contacts_now_, contacts_end_);
     std::swap(pairs_now_, pairs_end_);
-    contacts_fresh_ = true;
   } else {
-    contacts_fresh_ = false;
+    // Back-stepped: the contacts in hand are those of the sub-step's start, and projecting by them
+    // would push pairs by depths they no longer have while missing the ones that sank since.
+    timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
   }
-  timed(Correct, [&] { correctPenetration(world, settings); });
+  contacts_fresh_ = true;
+  timed(Correct, [&] {
+    if (projectContacts(world, settings)) contacts_fresh_ = false;
+  });
   return taken;
 }
 
