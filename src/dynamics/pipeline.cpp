@@ -111,15 +111,11 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
   if (taken == h) {
     std::swap(contacts_now_, contacts_end_);
     std::swap(pairs_now_, pairs_end_);
+    contacts_fresh_ = true;
   } else {
-    // Back-stepped: the contacts in hand are those of the sub-step's start, and projecting by them
-    // would push pairs by depths they no longer have while missing the ones that sank since.
-    timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
+    contacts_fresh_ = false;
   }
-  contacts_fresh_ = true;
-  timed(Correct, [&] {
-    if (projectContacts(world, settings)) contacts_fresh_ = false;
-  });
+  timed(Correct, [&] { correctPenetration(world, settings); });
   return taken;
 }
 

@@ -66,7 +66,7 @@ class Pipeline {
   double tunnellingBound(const World& world, double h) const;
   double backStep(World& world, const StepSettings& settings, double h);
   void correctPenetration(World& world, const StepSettings& settings);
-  bool projectContacts(World& world, const StepSettings& settings);   // true if anything moved
+  void projectContacts(World& world, const StepSettings& settings);   // time stepping
   static constexpr int kProjectionPasses = 8;
   template <typename F> void timed(Stage stage, F&& work) {
     auto start = std::chrono::steady_clock::now();

@@ -44,7 +44,7 @@ void Pipeline::timeStep(World& world, const StepSettings& settings) {
 // bodies along its normal). One pass, as the Baraff model does after every sub-step, cannot keep up
 // under a load: in a column of boxes each push down into the box below is undone by the push up
 // from it, and in the 1000-box pile pairs sank into each other by 6-8 cm over seconds.
-bool Pipeline::projectContacts(World& world, const StepSettings& settings) {
+void Pipeline::projectContacts(World& world, const StepSettings& settings) {
   const double tol = settings.contact.tolerance_m;
   const std::size_t m = contacts_now_.size();
   // Contacts grouped by pair of bodies (stable: within a pair in detection order).
@@ -60,7 +60,6 @@ bool Pipeline::projectContacts(World& world, const StepSettings& settings) {
     k = end;
   }
   moved_.assign(world.bodies.size(), Eigen::Vector3d::Zero());
-  bool any = false;
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(moved_[c.b] - moved_[c.a]); };
   for (int pass = 0; pass < kProjectionPasses; ++pass) {
     bool pushed = false;
@@ -82,16 +81,12 @@ bool Pipeline::projectContacts(World& world, const StepSettings& settings) {
       moved_[c.a] += da;
       moved_[c.b] += db;
       ++counters_.projections;
-      pushed = any = true;
+      pushed = true;
     }
     if (!pushed) break;
   }
-  // The time-stepping solve goes on with these contacts: their depths follow the bodies'
-  // displacements. The Baraff model detects again before using them, and its contacts keep the
-  // depths found, which the fault check reads (a pair sunk deep is a fault even once projected).
-  if (model_ == ContactModel::TimeStepping)
-    for (Contact& c : contacts_now_) c.depth = depthNow(c);
-  return any;
+  // The solve goes on with these contacts: their depths follow the bodies' displacements.
+  for (Contact& c : contacts_now_) c.depth = depthNow(c);
 }
 
 }  // namespace tumble
