@@ -1,5 +1,6 @@
 #include "dynamics/contact_islands.h"
 
+#include <algorithm>
 #include <numeric>
 
 namespace tumble {
@@ -33,6 +34,22 @@ std::vector<std::vector<const Contact*>> splitIntoIslands(const World& world,
     islands[island_of_root[root]].push_back(c);
   }
   return islands;
+}
+
+BodyPairGroups groupByBodyPair(const std::vector<Contact>& contacts) {
+  BodyPairGroups out;
+  const std::size_t m = contacts.size();
+  out.order.resize(m);
+  std::iota(out.order.begin(), out.order.end(), std::size_t{0});
+  auto pairOf = [&](std::size_t i) { return std::make_pair(contacts[i].a, contacts[i].b); };
+  std::stable_sort(out.order.begin(), out.order.end(), [&](std::size_t x, std::size_t y) { return pairOf(x) < pairOf(y); });
+  for (std::size_t k = 0; k < m;) {
+    std::size_t end = k;
+    while (end < m && pairOf(out.order[end]) == pairOf(out.order[k])) ++end;
+    out.groups.push_back({k, end});
+    k = end;
+  }
+  return out;
 }
 
 }  // namespace tumble

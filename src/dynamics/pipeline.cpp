@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "dynamics/contact_islands.h"
 #include "dynamics/gravity.h"
 #include "dynamics/time_of_impact.h"
 
@@ -197,27 +198,20 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
   // share one depth, and pushing once per corner would open a gap of three depths, leaving the
   // face unsupported (no resting force across a gap) for the next sub-step.
   const double tol = settings.contact.tolerance_m;
-  // Contacts grouped by pair of bodies (sorted, stable: within a pair in detection order), so
-  // that finding each pair's deepest point and its other points is linear, not quadratic, in a pile.
-  std::vector<std::size_t> order(contacts_now_.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  auto pairOf = [&](std::size_t i) { return std::make_pair(contacts_now_[i].a, contacts_now_[i].b); };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return pairOf(x) < pairOf(y); });
+  const BodyPairGroups grouped = groupByBodyPair(contacts_now_);
   struct Push {
     std::size_t first_seen, deepest;
   };
   std::vector<Push> pushes;
-  for (std::size_t k = 0; k < order.size();) {
-    std::size_t end = k;
+  for (const auto& [begin, end] : grouped.groups) {
     Push p{SIZE_MAX, SIZE_MAX};
-    for (; end < order.size() && pairOf(order[end]) == pairOf(order[k]); ++end) {
-      const std::size_t i = order[end];
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = grouped.order[k];
       if (contacts_now_[i].depth <= tol) continue;
       p.first_seen = std::min(p.first_seen, i);
       if (p.deepest == SIZE_MAX || contacts_now_[i].depth > contacts_now_[p.deepest].depth) p.deepest = i;
     }
     if (p.deepest != SIZE_MAX) pushes.push_back(p);
-    k = end;
   }
   // Pairs are pushed in the order their first too-deep point was detected (deterministic, and the
   // order the pushes had before they were grouped).

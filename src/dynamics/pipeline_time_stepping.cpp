@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dynamics/contact_islands.h"
 #include "dynamics/contact_lcp.h"
 #include "dynamics/pipeline.h"
 
@@ -46,24 +47,13 @@ void Pipeline::timeStep(World& world, const StepSettings& settings) {
 // from it, and in the 1000-box pile pairs sank into each other by 6-8 cm over seconds.
 void Pipeline::projectContacts(World& world, const StepSettings& settings) {
   const double tol = settings.contact.tolerance_m;
-  const std::size_t m = contacts_now_.size();
-  // Contacts grouped by pair of bodies (stable: within a pair in detection order).
-  std::vector<std::size_t> order(m);
-  for (std::size_t i = 0; i < m; ++i) order[i] = i;
-  auto pairOf = [&](std::size_t i) { return std::make_pair(contacts_now_[i].a, contacts_now_[i].b); };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return pairOf(x) < pairOf(y); });
-  std::vector<std::pair<std::size_t, std::size_t>> groups;   // ranges of `order`
-  for (std::size_t k = 0; k < m;) {
-    std::size_t end = k;
-    while (end < m && pairOf(order[end]) == pairOf(order[k])) ++end;
-    groups.push_back({k, end});
-    k = end;
-  }
+  const BodyPairGroups grouped = groupByBodyPair(contacts_now_);
+  const std::vector<std::size_t>& order = grouped.order;
   moved_.assign(world.bodies.size(), Eigen::Vector3d::Zero());
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(moved_[c.b] - moved_[c.a]); };
   for (int pass = 0; pass < kProjectionPasses; ++pass) {
     bool pushed = false;
-    for (const auto& [begin, end] : groups) {
+    for (const auto& [begin, end] : grouped.groups) {
       std::size_t deepest = order[begin];
       for (std::size_t k = begin + 1; k < end; ++k)
         if (depthNow(contacts_now_[order[k]]) > depthNow(contacts_now_[deepest])) deepest = order[k];
