@@ -248,4 +248,21 @@ double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const
   return s;
 }
 
+double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                  const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis) {
+  const double s = separation(a, pose_a, b, pose_b, cache);
+  const PairView p = makePairView(a, pose_a, b, pose_b);   // the working frame separation() used
+  double unused = 0;
+  switch (cache.axis) {
+    case Axis::FaceA: axis = p.a.normals[cache.index_a]; break;
+    case Axis::FaceB: axis = -p.b.normals[cache.index_b]; break;
+    case Axis::Edges:
+      if (narrow::edgeAxis(p.a, cache.index_a, p.b, cache.index_b, axis, unused)) break;
+      [[fallthrough]];
+    default: axis = Eigen::Vector3d::Zero(); break;   // no valid axis: the caller cannot use one
+  }
+  axis = p.to_world->linear() * axis;
+  return s;
+}
+
 }  // namespace tumble

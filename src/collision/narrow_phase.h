@@ -61,6 +61,12 @@ std::optional<ContactManifold> collide(const ConvexPiece& a, const Eigen::Isomet
 // conservative advancement. When overlapping it is minus the penetration depth.
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache);
+// The same, and the axis it was found on (world, unit, pointing from A to B): along a fixed axis
+// the gap closes no faster than the two pieces' point speeds along it, so conservative advancement
+// may bound a step by the approach along this axis rather than by the pieces' whole speeds.
+// The axis is zero when no axis was valid (degenerate pieces).
+double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                  const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis);
 
 // The static ground z <= height_m (world z up). The piece is A, the ground B, so the normal is
 // (0, 0, -1); every vertex below height_m + margin_m is a contact with depth = height_m - z,

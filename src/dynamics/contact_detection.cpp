@@ -5,6 +5,23 @@
 #include "collision/aabb.h"
 
 namespace tumble {
+namespace {
+
+// The thinnest width of a piece: the smallest extent of its vertices along a face normal.
+double thickness(const ConvexPiece& piece) {
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& n : piece.face_normals) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Eigen::Vector3d& v : piece.vertices) {
+      lo = std::min(lo, n.dot(v));
+      hi = std::max(hi, n.dot(v));
+    }
+    thinnest = std::min(thinnest, hi - lo);
+  }
+  return thinnest;
+}
+
+}  // namespace
 
 Eigen::Isometry3d poseOf(const RigidBody& body) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -23,8 +40,10 @@ ContactDetector::ContactDetector(const World& world) {
     }
     (body.is_static ? fixed : moving) += 1;
     for (const ConvexPiece& piece : body.pieces) {
-      pieces_.push_back({static_cast<int>(b), &piece, makeCollisionHull(piece)});
+      pieces_.push_back({static_cast<int>(b), &piece, makeCollisionHull(piece), thickness(piece)});
+      thinnest_ = std::min(thinnest_, pieces_.back().thickness);
       broad_.add({Aabb{}, static_cast<int>(b), body.is_static});
+      near_broad_.add({Aabb{}, static_cast<int>(b), body.is_static});
     }
   }
   // Something can touch only if a moving body meets another body or the ground.
@@ -89,6 +108,24 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
       if (collideGround(*pieces_[i].shape, poseOf(body), height, margin, manifold_))
         addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
     }
+  }
+}
+
+void ContactDetector::nearPairs(const World& world, const std::vector<double>& reach,
+                                std::vector<NearPair>& out) {
+  out.clear();
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const int body = pieces_[i].body;
+    near_broad_.setBox(static_cast<int>(i), aabbOf(*pieces_[i].shape, poseOf(world.bodies[body]), reach[body]));
+  }
+  near_broad_.findPairs(near_candidates_);
+  for (const ProxyPair& c : near_candidates_) {
+    const Piece& pa = pieces_[c.a];
+    const Piece& pb = pieces_[c.b];
+    Eigen::Vector3d axis;
+    double gap = separation(pa.hull, poseOf(world.bodies[pa.body]), pb.hull, poseOf(world.bodies[pb.body]),
+                            near_caches_[PiecePair{c.a, c.b}], axis);
+    out.push_back({pa.body, pb.body, std::max(gap, 0.0), std::min(pa.thickness, pb.thickness), axis});
   }
 }
 

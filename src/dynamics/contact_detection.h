@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -37,13 +38,29 @@ class ContactDetector {
   // (negative when all are separated): what bisection evaluates.
   double maxDepth(const World& world, const std::vector<PiecePair>& pairs);
 
+  // A pair of pieces that may meet within the bodies' reach: the candidates of the tunnelling
+  // bound (pipeline.cpp). `gap` is a lower bound on their distance now (0 when touching or
+  // overlapping), found along `axis` (world, unit, from a to b; zero if none was valid);
+  // `thickness` the thinner piece's width, the most the two may overlap unseen.
+  struct NearPair {
+    int body_a, body_b;
+    double gap, thickness;
+    Eigen::Vector3d axis;
+  };
+  // Every pair of pieces, at least one of them moving, whose boxes grown by their bodies' `reach`
+  // (m) overlap. Ground planes are left out: a half-space cannot be passed through.
+  void nearPairs(const World& world, const std::vector<double>& reach, std::vector<NearPair>& out);
+
   bool hasCollidablePairs() const { return has_pairs_; }
+  // The thinnest width of any piece (m): infinity when there are none.
+  double thinnestPiece() const { return thinnest_; }
 
  private:
   struct Piece {
     int body;
     const ConvexPiece* shape;
     CollisionHull hull;
+    double thickness;   // m, the smallest extent along a face normal
   };
   void updateBoxes(const World& world, double margin, const std::vector<double>* reach);
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
@@ -54,6 +71,12 @@ class ContactDetector {
   SweepAndPrune broad_;
   std::vector<ProxyPair> candidates_;
   std::map<PiecePair, SatCache> caches_;         // ordered: deterministic iteration
+  // The tunnelling bound's own broad phase and axis caches: its boxes are grown by each body's
+  // reach, and it leaves the narrow phase's cached features (its face hysteresis) untouched.
+  SweepAndPrune near_broad_;
+  std::vector<ProxyPair> near_candidates_;
+  std::map<PiecePair, SatCache> near_caches_;
+  double thinnest_ = std::numeric_limits<double>::infinity();
   ContactManifold manifold_;
   bool has_pairs_ = false;
 };

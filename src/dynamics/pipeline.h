@@ -16,7 +16,7 @@
 // impulse problem), integrate — never cut.
 //
 // A step of dt may be cut into sub-steps: at each first contact found by back-stepping, and where
-// a body moves fast enough to pass through the thinnest piece (the tunnelling bound).
+// a body could pass through a piece it may meet within the sub-step (the tunnelling bound).
 #pragma once
 
 #include <chrono>
@@ -63,7 +63,7 @@ class Pipeline {
   enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, StageCount };
   double substep(World& world, const StepSettings& settings, double remaining);
   void timeStep(World& world, const StepSettings& settings);
-  double tunnellingBound(const World& world, double h) const;
+  double tunnellingBound(const World& world, double h);
   double backStep(World& world, const StepSettings& settings, double h);
   void correctPenetration(World& world, const StepSettings& settings);
   void projectContacts(World& world, const StepSettings& settings);   // time stepping
@@ -89,7 +89,9 @@ class Pipeline {
   BodySnapshot snapshot_;
   double min_thickness_ = 0;
   std::vector<double> body_radius_;
-  std::vector<double> reach_;   // time stepping: how far each body can travel in the step
+  std::vector<double> reach_;   // how far each body can travel in the (sub-)step
+  std::vector<double> speed_;   // tunnelling bound: each body's point-speed bound
+  std::vector<ContactDetector::NearPair> near_;
   std::vector<Eigen::Vector3d> moved_;   // time stepping: each body's displacement by projection
   std::vector<StageTime> profile_;
   PipelineCounters counters_;
