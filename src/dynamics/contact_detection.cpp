@@ -129,6 +129,20 @@ void ContactDetector::nearPairs(const World& world, const std::vector<double>& r
   }
 }
 
+void ContactDetector::pairContacts(const World& world, const PiecePair& pair, double margin_m,
+                                   std::vector<Contact>& out) {
+  const Piece& pa = pieces_[pair.piece_a];
+  const Eigen::Isometry3d pose_a = poseOf(world.bodies[pa.body]);
+  bool found;
+  if (pair.piece_b < 0) {
+    found = collideGround(*pa.shape, pose_a, world.bodies[~pair.piece_b].x.z(), margin_m, manifold_);
+  } else {
+    const Piece& pb = pieces_[pair.piece_b];
+    found = collide(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), margin_m, caches_[pair], manifold_);
+  }
+  if (found) addPairContacts(world, pair, manifold_, out, nullptr);
+}
+
 double ContactDetector::maxDepth(const World& world, const std::vector<PiecePair>& pairs) {
   double deepest = -std::numeric_limits<double>::infinity();
   for (const PiecePair& pair : pairs) {

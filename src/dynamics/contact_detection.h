@@ -37,6 +37,9 @@ class ContactDetector {
   // The largest penetration depth among the given piece pairs in the world's current state
   // (negative when all are separated): what bisection evaluates.
   double maxDepth(const World& world, const std::vector<PiecePair>& pairs);
+  // The contact points of one pair in the world's current state (pairs closer than margin_m),
+  // appended to `out`: what back-stepping watches when a touching pair lands a new corner.
+  void pairContacts(const World& world, const PiecePair& pair, double margin_m, std::vector<Contact>& out);
 
   // A pair of pieces that may meet within the bodies' reach: the candidates of the tunnelling
   // bound (pipeline.cpp). `gap` is a lower bound on their distance now (0 when touching or

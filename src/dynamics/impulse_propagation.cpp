@@ -1,5 +1,6 @@
 #include "dynamics/impulse_propagation.h"
 
+#include <Eigen/QR>
 #include <algorithm>
 #include <limits>
 
@@ -54,15 +55,11 @@ void applyNewtonImpulses(World& world, const std::vector<const Contact*>& points
 // Relative slack on "no energy added": rounding in summing the energies of a few bodies.
 constexpr double kEnergySlack = 1e-12;
 
-}  // namespace
-
-void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats) {
-  std::vector<double> vn, e;
-  for (const Contact* c : points) {
-    vn.push_back(normalVelocity(world, *c));
-    e.push_back(vn.back() < -min_bounce_speed ? c->restitution : 0.0);
-  }
+// Newton's law with restitution on `points` (pre-impact normal velocities vn), never adding energy.
+void newtonImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
+                  double min_bounce_speed, double restitution_scale, ContactSolveStats& stats) {
+  std::vector<double> e;
+  for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed ? points[i]->restitution : 0.0);
   Momenta before(world, points);
   const double energy = before.energy(world);
   auto gains = [&] { return before.energy(world) > energy * (1 + kEnergySlack); };
@@ -87,6 +84,48 @@ void resolveImpact(World& world, const std::vector<const Contact*>& points, doub
   // projection (energy change -j^T A j / 2).
   before.restore(world);
   applyNewtonImpulses(world, points, vn, e, 0, false, stats);
+}
+
+// A slow impact settles. Newton's law at a landing edge turns the body about that edge and lifts
+// the edge it rested on (a rocking block: Housner 1963); that is right, and at speed the rocking
+// dies out by a constant factor per landing, but it never ends: as the lift-offs shrink to the
+// contact tolerance, each landing found within the tolerance starts the next, and a box on its
+// face chattered for ever at about 5 mrad/s. When no point approached faster than `settle_below`
+// (m/s; propagateImpulses uses settleSpeed, contact_solver.h), no touching point may leave faster than it did before the impact: the
+// normal velocities are set to max(v-, 0) by the least-norm normal impulses that do it. Kept only
+// if it adds no energy and leaves nothing approaching.
+void settleSlowImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
+                      double settle_below) {
+  const double slack = 1e-3 * settle_below;   // a lift-off or approach slower than this is none
+  double fastest = 0, lifted = 0;
+  std::vector<ContactRow> rows;
+  Eigen::VectorXd change(static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    fastest = std::min(fastest, vn[i]);
+    rows.push_back(rowAlong(world, *points[i], points[i]->normal));
+    const double now = rowVelocity(world, rows.back()), target = std::max(vn[i], 0.0);
+    change[static_cast<Eigen::Index>(i)] = target - now;
+    lifted = std::max(lifted, now - target);
+  }
+  if (fastest < -settle_below || lifted <= slack) return;
+  Momenta before(world, points);
+  const double energy = before.energy(world);
+  const Eigen::VectorXd f = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(delassus(world, rows)).solve(change);
+  if (!f.allFinite()) return;
+  applyAlongRows(world, rows, f);
+  bool approaching = false;
+  for (const ContactRow& row : rows) approaching |= rowVelocity(world, row) < -slack;
+  if (approaching || before.energy(world) > energy * (1 + kEnergySlack)) before.restore(world);
+}
+
+}  // namespace
+
+void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
+                   double restitution_scale, ContactSolveStats& stats, double settle_below) {
+  std::vector<double> vn;
+  for (const Contact* c : points) vn.push_back(normalVelocity(world, *c));
+  newtonImpact(world, points, vn, min_bounce_speed, restitution_scale, stats);
+  if (settle_below > 0) settleSlowImpact(world, points, vn, settle_below);
 }
 
 namespace {
@@ -134,19 +173,20 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
   // are capped so a pinched body cannot bounce for ever; inelastic rounds converge like
   // Gauss-Seidel on the inelastic impulse LCP, and the cap only stops a slow one.
   const int elastic_rounds = 4 * n + 4, max_rounds = 16 * n + 16;
+  const double settle_below = settleSpeed(s);
   for (int round = 0; round < max_rounds; ++round) {
     // The pair approaching fastest (first in island order on ties: deterministic).
     int k = 0;
     for (int i = 1; i < n; ++i)
       if (pairs[i].approach < pairs[k].approach) k = i;
     if (pairs[k].approach >= -s.resting_speed_m_s) return;
-    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, stats);
+    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, stats, settle_below);
     for (PairImpact& p : pairs)
       if (sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.
-  resolveImpact(world, island, min_bounce_speed, 0.0, stats);
+  resolveImpact(world, island, min_bounce_speed, 0.0, stats, settle_below);
 }
 
 }  // namespace tumble

@@ -41,7 +41,9 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island,
 // normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
 // the impulses; e is scaled by `restitution_scale` in [0, 1]. Never adds kinetic energy (see the
 // .cpp: Newton's law with friction can, Kane's paradox).
+// With settle_below > 0 (m/s), an impact slower than that then settles: no touching point leaves
+// faster than it did before (see the .cpp).
 void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats);
+                   double restitution_scale, ContactSolveStats& stats, double settle_below = 0);
 
 }  // namespace tumble

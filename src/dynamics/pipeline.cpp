@@ -6,7 +6,9 @@
 #include <cstdint>
 
 #include "dynamics/contact_islands.h"
+#include "dynamics/contact_lcp.h"
 #include "dynamics/gravity.h"
+#include "dynamics/position_projection.h"
 #include "dynamics/time_of_impact.h"
 
 namespace tumble {
@@ -66,10 +68,7 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
     timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
   if (has_contacts_) {
     bool hit = false;
-    // A bounce slower than what gravity takes away in about two steps cannot leave the surface
-    // for a whole step: resolved elastically it would come back every step (v -> e v - g dt has
-    // the fixed point g dt / (1 - e)) and never come to rest. Such impacts are made inelastic.
-    double min_bounce = std::max(settings.contact.resting_speed_m_s, 2 * world.gravity.norm() * settings.dt);
+    const double min_bounce = minBounce(world, settings);   // slower impacts are inelastic
     timed(Collide, [&] {
       hit = resolveCollisions(world, contacts_now_, settings.contact, min_bounce, counters_.contacts);
     });
@@ -85,7 +84,14 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
   double h = has_contacts_ ? std::min(remaining, tunnellingBound(world, remaining)) : remaining;
   StepSettings sub = settings;
   sub.dt = h;
-  if (has_contacts_) snapshot_.save(world);
+  if (has_contacts_) {
+    snapshot_.save(world);
+    // Which touching points are lifting off as the sub-step starts (after the impulses): if one
+    // ends the sub-step too deep it has come down again, a landing that back-stepping must find.
+    lifting_.resize(contacts_now_.size());
+    for (std::size_t i = 0; i < contacts_now_.size(); ++i)
+      lifting_[i] = normalVelocity(world, contacts_now_[i]) > settings.contact.resting_speed_m_s;
+  }
   timed(Integrate, [&] { integrate(world, wrenches_, sub); });
   if (!has_contacts_) return h;
 
@@ -153,21 +159,41 @@ double Pipeline::tunnellingBound(const World& world, double h) {
 double Pipeline::backStep(World& world, const StepSettings& settings, double h) {
   ++counters_.back_steps;
   const double tol = settings.contact.tolerance_m;
-  // A pair is an impact to go back for when it ends deeper than the tolerance and was not touching
-  // at the start. A pair that was already touching (resting, or landing its other corners as it
-  // turns) is left to the impulse and position stages of the next sub-step: its depth is already
-  // within the tolerance at the start, so bisection on it would find no better time and would cut
-  // the step to nothing. This keeps back-stepping to the first contact of each pair.
-  std::vector<PiecePair> offending;
-  double deepest = -std::numeric_limits<double>::infinity();
+  // A pair is an impact to go back for when it ends deeper than the tolerance and either was not
+  // touching at the start (a first contact), or was touching but its too-deep point is a landing:
+  // a corner or edge away from where the pair touched (a box rocking back onto its face lands one
+  // edge while the other rests), or a touching point that was lifting off and came down again
+  // within the sub-step. Left to the next sub-step's impulse, a landing is resolved a sub-step
+  // late, after gravity has sped it up for that long: the box rocked on its face for ever. A pair
+  // whose too-deep point was touching and not lifting (resting, or sinking by drift) is left to the
+  // impulse and position stages: bisection on it would find no better time.
+  //
+  // A first contact is timed by the pair's separation; a landing by the depth of the pair's
+  // contact points away from its resting ones, so that the resting points' drift does not time it.
+  std::vector<Watch> offending;
   for (std::size_t i = 0; i < contacts_end_.size(); ++i) {
-    if (contacts_end_[i].depth <= tol) continue;
+    const Contact& end = contacts_end_[i];
+    if (end.depth <= tol) continue;
     double before = -std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < contacts_now_.size(); ++j)
-      if (pairs_now_[j] == pairs_end_[i]) before = std::max(before, contacts_now_[j].depth);
-    if (before >= -tol) continue;
-    if (offending.empty() || !(offending.back() == pairs_end_[i])) offending.push_back(pairs_end_[i]);
-    deepest = std::max(deepest, contacts_end_[i].depth);
+    bool touched_here = false;
+    const double near = landingRadius(end);
+    for (std::size_t j = 0; j < contacts_now_.size(); ++j) {
+      if (!(pairs_now_[j] == pairs_end_[i])) continue;
+      const Contact& start = contacts_now_[j];
+      before = std::max(before, start.depth);
+      touched_here |= start.depth >= -tol && !lifting_[j] && (start.point - end.point).squaredNorm() <= near * near;
+    }
+    // A landing slower than settleSpeed is not timed: the next sub-step's impulse settles it
+    // whenever it came (impulse_propagation.cpp), and timing every slow corner that settles in a
+    // pile cut its steps into about a hundred sub-steps.
+    if (before >= -tol && (touched_here || -normalVelocity(world, end) <= settleSpeed(settings.contact))) continue;
+    if (!offending.empty() && offending.back().pair == pairs_end_[i]) continue;
+    Watch w{pairs_end_[i], before >= -tol, near, {}};
+    if (w.landing)
+      for (std::size_t j = 0; j < contacts_now_.size(); ++j)
+        if (pairs_now_[j] == w.pair && contacts_now_[j].depth >= -tol && !lifting_[j])
+          w.resting.push_back(contacts_now_[j].point);
+    offending.push_back(std::move(w));
   }
   if (offending.empty()) return h;
   // The bracket needs every pair within the tolerance at the start. The manifold (which said the
@@ -175,66 +201,104 @@ double Pipeline::backStep(World& world, const StepSettings& settings, double h) 
   // missed at the start; such a pair is not a first contact to find but a penetration to project,
   // and bisecting on it would return t = 0 and stall the step. It is dropped and counted.
   snapshot_.restore(world);
-  std::vector<PiecePair> watched;
-  for (const PiecePair& pair : offending)
-    if (detector_.maxDepth(world, {pair}) <= tol) watched.push_back(pair);
+  watched_.clear();
+  for (Watch& w : offending)
+    if (watchedDepth(world, w, settings) <= tol) watched_.push_back(std::move(w));
     else ++counters_.inconsistent_pairs;
   StepSettings sub = settings;
   auto depth_at = [&](double t) {
     snapshot_.restore(world);
     sub.dt = t;
     integrate(world, wrenches_, sub);
-    return detector_.maxDepth(world, watched);
+    double worst = -std::numeric_limits<double>::infinity();
+    for (const Watch& w : watched_) worst = std::max(worst, watchedDepth(world, w, settings));
+    return worst;
   };
-  if (watched.empty()) {
+  if (watched_.empty()) {
     depth_at(h);
     return h;
   }
-  deepest = depth_at(h);
+  const double deepest = depth_at(h);
   ++counters_.bisection_evaluations;
   if (deepest <= tol) return h;   // only the manifold saw it too deep: nothing to go back for
   ImpactSearch found = findFirstContact(depth_at, h, deepest, tol, settings.contact.max_bisections,
                                         settings.contact.regula_falsi);
   counters_.bisection_evaluations += found.evaluations;
+  if (found.time < 1e-6 * h) {
+    // The landing is there at once: found again at the start after its impulse (a point the
+    // impulse could not stop, or whose manifold moved), cutting here would stall the step in
+    // sub-steps of nothing. The next sub-step's impulse and the projection take it.
+    depth_at(h);
+    return h;
+  }
   depth_at(found.time);
   return found.time;
 }
 
-// Drift: residual penetration deeper than the tolerance is removed by moving the two bodies apart
-// along the normal, in inverse proportion to their masses. Only positions move, never velocities,
-// so no kinetic energy is added (unlike a Baumgarte term, which pushes bodies apart with speed).
+// The depth back-stepping times a watched pair by: its separation for a first contact; for a
+// landing, the deepest of its contact points away from every point it rested on at the start.
+double Pipeline::watchedDepth(const World& world, const Watch& w, const StepSettings& settings) {
+  if (!w.landing) return detector_.maxDepth(world, {w.pair});
+  landing_points_.clear();
+  detector_.pairContacts(world, w.pair, settings.contact.margin_m, landing_points_);
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const Contact& c : landing_points_) {
+    bool resting = false;
+    for (const Eigen::Vector3d& p : w.resting) resting |= (p - c.point).squaredNorm() <= w.near * w.near;
+    if (!resting) deepest = std::max(deepest, c.depth);
+  }
+  return deepest;
+}
+
+// A bounce slower than what gravity takes away in about two steps cannot leave the surface for a
+// whole step: resolved elastically it would come back every step (v -> e v - g dt has the fixed
+// point g dt / (1 - e)) and never come to rest. Such impacts are made inelastic.
+double Pipeline::minBounce(const World& world, const StepSettings& settings) {
+  return std::max(settings.contact.resting_speed_m_s, 2 * world.gravity.norm() * settings.dt);
+}
+
+// How far a too-deep point may be from a touching point of the same pair at the sub-step's start
+// and still be that point (moved by the sub-step's sliding or turning) rather than a landing: a
+// tenth of the smaller body's radius.
+double Pipeline::landingRadius(const Contact& c) const {
+  double r = std::numeric_limits<double>::infinity();
+  for (int body : {c.a, c.b})
+    if (body_radius_[body] > 0) r = std::min(r, body_radius_[body]);
+  return 0.1 * r;
+}
+
+// Drift: residual penetration deeper than the tolerance is removed by moving and turning the two
+// bodies of each pair, the smallest displacement (weighted by mass and inertia) that lifts the
+// pair's too-deep points back within the tolerance (position_projection.h). Only positions move,
+// never velocities, so no kinetic energy is added (unlike a Baumgarte term, which pushes bodies
+// apart with speed).
 void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
-  // Once per pair of bodies, by its deepest point: the four corners of a face resting too deep
-  // share one depth, and pushing once per corner would open a gap of three depths, leaving the
-  // face unsupported (no resting force across a gap) for the next sub-step.
+  // Once per pair of bodies, all its points together: the four corners of a face resting too deep
+  // share one depth and are lifted together, and a landing edge is lifted by turning about the
+  // resting one rather than by lifting both.
   const double tol = settings.contact.tolerance_m;
   const BodyPairGroups grouped = groupByBodyPair(contacts_now_);
   struct Push {
-    std::size_t first_seen, deepest;
+    std::size_t first_seen, group;
   };
   std::vector<Push> pushes;
-  for (const auto& [begin, end] : grouped.groups) {
-    Push p{SIZE_MAX, SIZE_MAX};
+  for (std::size_t g = 0; g < grouped.groups.size(); ++g) {
+    const auto& [begin, end] = grouped.groups[g];
+    std::size_t first = SIZE_MAX;
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = grouped.order[k];
-      if (contacts_now_[i].depth <= tol) continue;
-      p.first_seen = std::min(p.first_seen, i);
-      if (p.deepest == SIZE_MAX || contacts_now_[i].depth > contacts_now_[p.deepest].depth) p.deepest = i;
+      if (contacts_now_[i].depth > tol) first = std::min(first, i);
     }
-    if (p.deepest != SIZE_MAX) pushes.push_back(p);
+    if (first != SIZE_MAX) pushes.push_back({first, g});
   }
-  // Pairs are pushed in the order their first too-deep point was detected (deterministic, and the
-  // order the pushes had before they were grouped).
+  // Pairs are projected in the order their first too-deep point was detected (deterministic).
   std::sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.first_seen < y.first_seen; });
+  std::vector<const Contact*> points;
   for (const Push& p : pushes) {
-    const Contact& c = contacts_now_[p.deepest];
-    RigidBody& A = world.bodies[c.a];
-    RigidBody& B = world.bodies[c.b];
-    double wa = A.inv_mass, wb = B.inv_mass;
-    if (wa + wb <= 0) continue;
-    double push = c.depth - 0.5 * tol;
-    A.x -= c.normal * (push * wa / (wa + wb));
-    B.x += c.normal * (push * wb / (wa + wb));
+    const auto& [begin, end] = grouped.groups[p.group];
+    points.clear();
+    for (std::size_t k = begin; k < end; ++k) points.push_back(&contacts_now_[grouped.order[k]]);
+    if (!projectPair(world, points, tol)) continue;
     ++counters_.projections;
     contacts_fresh_ = false;
   }

@@ -60,11 +60,20 @@ class Pipeline {
   const std::vector<Contact>& contacts() const { return contacts_now_; }
 
  private:
+  struct Watch {                // back-stepping: a pair to time
+    PiecePair pair;
+    bool landing = false;        // touching at the start: timed by its points away from `resting`
+    double near = 0;             // m: how close to a resting point a point is that point
+    std::vector<Eigen::Vector3d> resting;
+  };
   enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, StageCount };
   double substep(World& world, const StepSettings& settings, double remaining);
   void timeStep(World& world, const StepSettings& settings);
   double tunnellingBound(const World& world, double h);
   double backStep(World& world, const StepSettings& settings, double h);
+  double landingRadius(const Contact& c) const;
+  static double minBounce(const World& world, const StepSettings& settings);
+  double watchedDepth(const World& world, const Watch& w, const StepSettings& settings);
   void correctPenetration(World& world, const StepSettings& settings);
   void projectContacts(World& world, const StepSettings& settings);   // time stepping
   static constexpr int kProjectionPasses = 8;
@@ -85,6 +94,9 @@ class Pipeline {
   std::vector<Contact> contacts_now_, contacts_end_;
   std::vector<PiecePair> pairs_now_, pairs_end_;
   bool contacts_fresh_ = false;
+  std::vector<char> lifting_;   // per contact of contacts_now_: separating as the sub-step starts
+  std::vector<Watch> watched_;
+  std::vector<Contact> landing_points_;
   std::vector<Wrench> wrenches_;
   BodySnapshot snapshot_;
   double min_thickness_ = 0;

@@ -28,14 +28,9 @@ void checkStack(double ratio) {
 
 }  // namespace
 
+// 10000:1 came apart after 1.4 s until session 5: the light cube kept a residual 2e-7 m/s from
+// the first step and the projection, pushing each pair by its deepest point, fed it. Now: 1e-6 m
+// deep, 6e-6 m of drift over 10 s.
 TEST_CASE("mass ratio sweep: a heavy cube on a light one neither sinks, drifts nor jitters", "[hard][mass_ratio]") {
-  checkStack(GENERATE(1.0, 10.0, 100.0, 1000.0));
-}
-
-// Known failure at 10000:1: the resting-force LCP leaves the light cube squeezed between the
-// ground and a 10^4 times heavier body with a residual velocity of 2e-7 m/s (and 8e-7 rad/s) from
-// the first step; the position projection then feeds it, and by 1.4 s the stack comes apart
-// (drift 6.8 m, penetration 2.6 m at 10 s). Ratios up to 1000 pass with margin.
-TEST_CASE("mass ratio 10000:1 stays stacked (reached: comes apart after 1.4 s)", "[hard][mass_ratio][!shouldfail]") {
-  checkStack(10000.0);
+  checkStack(GENERATE(1.0, 10.0, 100.0, 1000.0, 10000.0));
 }

@@ -1,0 +1,52 @@
+#include "dynamics/position_projection.h"
+
+#include <Eigen/QR>
+#include <cmath>
+
+#include "dynamics/contact_jacobian.h"
+
+namespace tumble {
+namespace {
+
+// Turns and moves a body by a small displacement: x += dx, q = exp(dtheta) q.
+void displace(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta) {
+  body.x += dx;
+  const double angle = dtheta.norm();
+  if (angle > 0) body.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, dtheta / angle)) * body.q).normalized();
+}
+
+}  // namespace
+
+bool projectPair(World& world, const std::vector<const Contact*>& points, double tol) {
+  if (points.empty()) return false;
+  RigidBody& A = world.bodies[points.front()->a];
+  RigidBody& B = world.bodies[points.front()->b];
+  if (A.inv_mass + B.inv_mass <= 0) return false;
+  std::vector<ContactRow> rows;
+  std::vector<double> lift;
+  bool deep = false;
+  for (const Contact* c : points) {
+    if (c->depth < -tol) continue;   // apart: free to move
+    deep |= c->depth > tol;
+    rows.push_back(rowAlong(world, *c, c->normal));
+    lift.push_back(c->depth > tol ? c->depth - 0.5 * tol : 0.0);
+  }
+  if (!deep) return false;
+  const Eigen::MatrixXd W = delassus(world, rows);
+  const Eigen::VectorXd d = Eigen::Map<const Eigen::VectorXd>(lift.data(), static_cast<Eigen::Index>(lift.size()));
+  const Eigen::VectorXd p = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(W).solve(d);
+  if (!p.allFinite()) return false;
+  Eigen::Vector3d fa = Eigen::Vector3d::Zero(), ta = fa, fb = fa, tb = fa;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Eigen::Vector3d push = p[static_cast<Eigen::Index>(i)] * rows[i].dir;
+    fb += push;
+    tb += rows[i].rb.cross(push);
+    fa -= push;
+    ta -= rows[i].ra.cross(push);
+  }
+  if (!A.is_static) displace(A, A.inv_mass * fa, inverseInertiaWorld(A) * ta);
+  if (!B.is_static) displace(B, B.inv_mass * fb, inverseInertiaWorld(B) * tb);
+  return true;
+}
+
+}  // namespace tumble
