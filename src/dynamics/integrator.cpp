@@ -82,12 +82,16 @@ void stepSemiImplicitEuler(RigidBody& body, const Wrench& wrench, double dt) {
   // reach rounding for |w| dt < 0.1 (checked against 20 iterations in the tests' scenes).
   for (int i = 0; i < 4; ++i) w = angularVelocityAt(body, rotationOver(w, dt / 2) * body.q);
   Eigen::Quaterniond q = (rotationOver(w, dt) * body.q).normalized();
+  // A gain at rounding level (1e-14 of the energy) is left alone: dividing it by a near-zero
+  // |w x L| (a body at rest, or spinning about a principal axis) would turn the body by noise. And
+  // a correction never turns by more than a tenth of the step's own turn.
+  const double max_turn = 0.1 * w.norm() * dt;
   for (int i = 0; i < 2; ++i) {
     const double gain = rotationalEnergy(body, q) - energy;
-    if (gain <= 0) break;
+    if (!(gain > 1e-14 * energy)) break;
     const Eigen::Vector3d g = angularVelocityAt(body, q).cross(body.L);
     const double g2 = g.squaredNorm();
-    if (!(g2 > 0)) break;
+    if (!(g2 > 0) || gain / std::sqrt(g2) > max_turn) break;
     q = (rotationOver(-gain / g2 * g, 1.0) * q).normalized();
   }
   body.q = q;

@@ -1,6 +1,6 @@
-// Drift projection by pair (position_projection.h): too-deep points are lifted to half the
-// tolerance, touching points stay where they are, and a landing edge is lifted by turning the body
-// about the edge it rests on, not by lifting the whole body.
+// Drift projection by pair (position_projection.h): a face flush within the tolerance is moved
+// straight out to half the tolerance deep; a landing edge is lifted by turning the body about the
+// edge it rests on (held at half the tolerance), not by lifting the whole body.
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
@@ -48,6 +48,7 @@ std::pair<double, double> lowestBySide(const RigidBody& cube) {
 }  // namespace
 
 TEST_CASE("projection: a face sunk evenly is lifted straight up to half the tolerance", "[projection]") {
+  // (all four corners equally deep: flush, moved straight out, never turned)
   World world = restWorld();
   RigidBody& cube = world.bodies[1];
   cube.x.z() = 0.5 - 1e-4;   // all four corners 0.1 mm deep
@@ -78,8 +79,8 @@ TEST_CASE("projection: a landing edge is lifted by turning about the resting edg
   auto [left, right] = lowestBySide(cube);
   INFO("resting edge " << left << " m, landing edge " << right << " m, centre rose " << cube.x.z() - z0 << " m");
   // The turn is solved to first order in its angle (1e-4 rad): second-order terms are ~1e-8 m.
-  CHECK(std::abs(left) < 1e-8);                                // stayed where it rested
-  CHECK(right == Approx(-0.5 * kTol).margin(1e-8));            // lifted to half the tolerance
+  CHECK(left == Approx(-0.5 * kTol).margin(1e-8));    // settled by half the tolerance, no more
+  CHECK(right == Approx(-0.5 * kTol).margin(1e-8));   // lifted to half the tolerance
   // Turning about the resting edge lifts the centre by about half of what the landing edge rose
   // (the old push lifted it, and the resting edge, by all of it: 1e-4 m).
   CHECK(cube.x.z() - z0 == Approx(0.5 * (1e-4 - 0.5 * kTol)).epsilon(0.05));
