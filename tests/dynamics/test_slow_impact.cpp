@@ -1,7 +1,7 @@
 // A landing edge while the opposite edge rests (impulse_propagation.cpp, settleSlowImpact): at
 // speed, Newton's law turns the box about the landing edge and lifts the resting one (a rocking
-// block); slower than min_bounce (what gravity gives in about two steps) the impact settles and
-// nothing lifts off, so rocking ends instead of chattering at the contact tolerance.
+// block); slower than settleSpeed (0.08 m/s, contact_solver.h) the impact settles and nothing
+// lifts off, so rocking ends instead of chattering at the contact tolerance.
 #include <catch2/catch.hpp>
 
 #include "dynamics/contact_detection.h"
@@ -52,8 +52,8 @@ Landing land(double speed) {
 
 }  // namespace
 
-TEST_CASE("slow impact: a landing edge slower than min_bounce stops the box, nothing lifts off", "[impulse]") {
-  const Landing l = land(0.05);   // below min_bounce = 0.082 m/s at dt = 1/240
+TEST_CASE("slow impact: a landing edge slower than the settle speed stops the box, nothing lifts off", "[impulse]") {
+  const Landing l = land(0.05);   // below settleSpeed, 0.08 m/s
   INFO("landing edge " << l.landing_vn << " m/s, resting edge " << l.resting_vn << " m/s");
   CHECK(std::abs(l.landing_vn) < 1e-9);
   CHECK(std::abs(l.resting_vn) < 1e-9);
