@@ -230,11 +230,12 @@ std::optional<ContactManifold> collide(const ConvexPiece& a, const Eigen::Isomet
   return collide(makeCollisionHull(a), pose_a, makeCollisionHull(b), pose_b, margin_m, cache);
 }
 
-double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
-                  const Eigen::Isometry3d& pose_b, SatCache& cache) {
+namespace {
+
+// The SAT value over every axis of the pair as seen in its working frame, the best axis cached.
+double fullSeparation(const PairView& p, SatCache& cache) {
   // every axis, even when the cached one separates: the largest value is the tightest lower bound
   // on the distance, which lets conservative advancement take the longest safe step
-  const PairView p = makePairView(a, pose_a, b, pose_b);
   const SatResult r = fullSat(p, INFINITY, cache);
   const double s = std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
   cache.index_a = cache.index_b = -1;
@@ -248,10 +249,17 @@ double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const
   return s;
 }
 
+}  // namespace
+
+double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                  const Eigen::Isometry3d& pose_b, SatCache& cache) {
+  return fullSeparation(makePairView(a, pose_a, b, pose_b), cache);
+}
+
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis) {
-  const double s = separation(a, pose_a, b, pose_b, cache);
-  const PairView p = makePairView(a, pose_a, b, pose_b);   // the working frame separation() used
+  const PairView p = makePairView(a, pose_a, b, pose_b);   // one working frame for value and axis
+  const double s = fullSeparation(p, cache);
   double unused = 0;
   switch (cache.axis) {
     case Axis::FaceA: axis = p.a.normals[cache.index_a]; break;
