@@ -96,19 +96,23 @@ TEST_CASE("time stepping: no cube passes through a 1 cm wall at 100 m/s", "[cont
   }
 }
 
-TEST_CASE("time stepping: the pile by Gauss-Seidel lies in the bin after 3 s, under 1e-4 m deep", "[contact][time_stepping]") {
+// Contact scene 8 (issue 3) with the time-stepping model: the pile comes to rest inside the bin
+// within the issue's 5 s. Reached (session 6): every piece slower than 3e-7 m/s and 5e-7 rad/s
+// from 3.7 s on, 1.6e-7 m/s at 5 s; the deepest overlap in the last half second 9.8e-7 m (the
+// Baraff model still creeps at 1e-2 m/s at 5 s: test_pile_scene.cpp says why).
+TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, under 1e-4 m deep", "[contact][time_stepping]") {
   double deepest_late = 0;
-  auto run = runScene("pile", 3, [&](const World& w) {
+  auto run = runScene("pile", 5, [&](const World& w) {
     // the last half second, every 30 steps (worldPenetration tests every pair by SAT: costly)
-    if (w.time > 2.5 && std::lround(w.time * 240) % 30 == 0)
+    if (w.time > 4.5 && std::lround(w.time * 240) % 30 == 0)
       deepest_late = std::max(deepest_late, test::worldPenetration(w));
   }, 1000000, [](Scene& s) {
     timeStepping(s);
     s.simulation.pivoting_max_rows = 0;   // every island by Gauss-Seidel: the fast setting for piles
   });
   // The issue's bound for the pile is 1e-3 m; this is a tenth of it, so that it also catches a
-  // return to a single projection pass per step (5.5e-4 m here). Reached: 4.4e-6 m in the last
-  // half second, 1e-6 m at the end. While the pieces land (0.3-0.7 s) pairs overlap by up to
+  // return to a single projection pass per step (5.5e-4 m here). Reached: 9.8e-7 m in the last
+  // half second and at the end. While the pieces land (0.3-0.7 s) pairs overlap by up to
   // 2.2 cm for a step or two (a corner rotating in that the start-of-step contacts did not hold).
   INFO("deepest overlap in the last 0.5 s " << deepest_late << " m, at the end " << run.max_penetration << " m");
   CHECK(deepest_late < 1e-4);
@@ -121,6 +125,9 @@ TEST_CASE("time stepping: the pile by Gauss-Seidel lies in the bin after 3 s, un
     CHECK(std::abs(end[i].x.x()) < 2.4);   // the bin's inside: walls 0.2 m thick centred at +-2.5 m
     CHECK(std::abs(end[i].x.y()) < 2.4);
     CHECK(end[i].x.z() > 0);
+    // At rest: below the resting-contact speed (1e-3 m/s), as the Baraff pile test asks.
+    CHECK(end[i].v.norm() < 1e-3);
+    CHECK(end[i].w.norm() < 1e-2);
   }
 }
 
