@@ -130,7 +130,8 @@ void stopResidualSlip(const World& world, const std::vector<ContactRow>& rows, c
   }
 }
 
-// The fallback when dynamic friction cannot be found by iteration: every contact gets boxed
+// Without a memory (a single solve, as in the redundant-contact tests), the fallback when dynamic
+// friction cannot be found by iteration: every contact gets boxed
 // friction rows (|f_t| <= mu f_n, asking for zero tangential acceleration), as ODE and Bullet treat
 // all contacts. Always bounded (A is positive semi-definite); a sliding contact is then held by
 // at most mu f_n for this sub-step instead of being slowed by exactly mu f_n. Counted.
@@ -147,8 +148,11 @@ void restWithBoxedFriction(const World& world, const std::vector<const Contact*>
   addForces(world, lcp.rows, r.f, wrenches);
 }
 
-// Rows (normal; two tangents for a sticking contact, one against the slide for a sliding one)
-// solved by projected Gauss-Seidel without forming A (row_gauss_seidel.h). Sliding friction is
+// Without a memory (a single solve): rows (normal; two tangents for a sticking contact, one
+// against the slide for a sliding one) solved by projected Gauss-Seidel on the accelerations,
+// from zero, without forming A (row_gauss_seidel.h). The pipeline passes a memory and gets
+// restIslandAtVelocityLevel instead: from zero at every sub-step this does not converge on a
+// pyramid or a pile within 200 sweeps. Sliding friction is
 // mu f_n against the slide, or less where that would reverse the slide within `step_s`.
 void restIslandIteratively(const World& world, const std::vector<const Contact*>& resting,
                            const ContactSettings& s, double step_s, std::vector<Wrench>& wrenches,
@@ -187,11 +191,89 @@ void restIslandIteratively(const World& world, const std::vector<const Contact*>
   addForces(world, lcp.rows, r.f, wrenches);
 }
 
+// Per contact of an island, the impulse over step_s its rows' forces give (N s on B, world axes),
+// remembered so that the island starts warm if it must be solved iteratively next time.
+void rememberForces(const World& world, const std::vector<const Contact*>& resting, const ContactLcp& lcp,
+                    const Eigen::VectorXd& f, const std::vector<ContactRow>& extra_rows,
+                    const std::vector<int>& extra_contact, const Eigen::VectorXd& extra_f, double step_s,
+                    RestingMemory& memory) {
+  const int n = static_cast<int>(lcp.rows.size());
+  std::vector<Eigen::Vector3d> impulse(resting.size(), Eigen::Vector3d::Zero());
+  for (std::size_t k = 0; k < resting.size(); ++k) {
+    const int r_end = k + 1 < resting.size() ? lcp.normal_row[k + 1] : n;
+    for (int r = lcp.normal_row[k]; r < r_end; ++r) impulse[k] += f[r] * step_s * lcp.rows[r].dir;
+  }
+  for (std::size_t j = 0; j < extra_rows.size(); ++j) impulse[extra_contact[j]] += extra_f[j] * step_s * extra_rows[j].dir;
+  for (std::size_t k = 0; k < resting.size(); ++k) {
+    ImpulseRecord rec;
+    rec.a = resting[k]->a;
+    rec.b = resting[k]->b;
+    rec.local = ImpulseMemory::localPoint(world, *resting[k]);
+    rec.impulse = impulse[k];
+    memory.next.push_back(rec);
+  }
+}
+
+// An island too large to pivot, solved at the velocity level over the step (as the time-stepping
+// model solves every island): the impulses p that leave no contact approaching (v_n+ >= 0) and
+// no contact slipping inside its friction pyramid (v_t+ = 0, |p_t| <= mu p_n), given the
+// velocities the applied forces would reach within step_s; the forces are p / step_s. Warm
+// started from the island's impulses of the last sub-step (matched by pair of bodies and point):
+// Gauss-Seidel started from zero at every sub-step does not converge on a pile or a pyramid in
+// 200 sweeps, and the unbalanced forces it leaves make them creep.
+void restIslandAtVelocityLevel(const World& world, const std::vector<const Contact*>& resting,
+                               double step_s, std::vector<Wrench>& wrenches, ContactSolveStats& stats,
+                               RestingMemory& memory) {
+  ++stats.iterative_islands;
+  ContactLcp lcp;   // rows and normal_row only: A is never formed
+  std::vector<RowLimit> limits;
+  for (const Contact* c : resting) {
+    const int normal = static_cast<int>(lcp.rows.size());
+    lcp.normal_row.push_back(normal);
+    lcp.rows.push_back(rowAlong(world, *c, c->normal));
+    limits.push_back({});
+    if (c->friction <= 0) continue;
+    Eigen::Vector3d t1, t2;
+    tangentsOf(c->normal, t1, t2);
+    for (const Eigen::Vector3d& t : {t1, t2}) {
+      lcp.rows.push_back(rowAlong(world, *c, t));
+      limits.push_back({RowLimit::Static, normal, c->friction, 0});
+    }
+  }
+  const int n = static_cast<int>(lcp.rows.size());
+  Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches) * step_s;
+  for (int r = 0; r < n; ++r) b[r] += rowVelocity(world, lcp.rows[r]);
+  auto rowsOfContact = [&](std::size_t k) {
+    return std::make_pair(lcp.normal_row[k], k + 1 < resting.size() ? lcp.normal_row[k + 1] : n);
+  };
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
+  for (std::size_t k = 0; k < resting.size(); ++k) {
+    const ImpulseRecord* last = memory.last.find(world, *resting[k], kRestingMatchRadius);
+    if (!last) continue;
+    auto [r0, r_end] = rowsOfContact(k);
+    for (int r = r0; r < r_end; ++r) start[r] = last->impulse.dot(lcp.rows[r].dir);
+    start[r0] = std::max(0.0, start[r0]);
+  }
+  RowGaussSeidelSettings gs;
+  gs.tolerance = 1e-6;   // of the largest velocity term, as for the time-stepping model's large islands
+  RowGaussSeidelResult r = solveRowsGaussSeidel(world, lcp.rows, b, limits, gs, start);
+  stats.sweeps += r.sweeps;
+  if (!r.converged) ++stats.unconverged_sweeps;
+  const Eigen::VectorXd forces = r.f / step_s;
+  addForces(world, lcp.rows, forces, wrenches);
+  rememberForces(world, resting, lcp, forces, {}, {}, {}, step_s, memory);
+}
+
 void restIsland(const World& world, const std::vector<const Contact*>& resting, const ContactSettings& s,
-                double step_s, std::vector<Wrench>& wrenches, ContactSolveStats& stats) {
+                double step_s, std::vector<Wrench>& wrenches, ContactSolveStats& stats, RestingMemory* memory) {
+  // The iterative solve: at the velocity level, warm-started, when there is a memory to start from.
+  auto iterate = [&] {
+    if (memory && step_s > 0) restIslandAtVelocityLevel(world, resting, step_s, wrenches, stats, *memory);
+    else restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+  };
   // Pivoting costs the cube of the rows; past max_direct_rows the iterative solve takes over.
   if (3 * resting.size() > static_cast<std::size_t>(s.max_direct_rows)) {
-    restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+    iterate();
     return;
   }
   // A pivoting solve that stops short (pivot or friction-pass cap) with forces that do not satisfy
@@ -234,7 +316,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
   if (unusable(r, lcp.problem)) {
     ++stats.iterative_fallbacks;
-    restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+    iterate();
     return;
   }
   // The iteration contracts when dynamic friction changes the normal forces less than it is
@@ -248,7 +330,12 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
       next[k] = resting[slide_contact[k]]->friction * std::max(0.0, r.f[lcp.normal_row[slide_contact[k]]]);
     double change = (next - g).cwiseAbs().maxCoeff();
     if (pass > 0 && change > last_change) {
-      restWithBoxedFriction(world, resting, s, step_s, wrenches, stats);
+      if (memory && step_s > 0) {
+        ++stats.friction_fallbacks;
+        iterate();
+      } else {
+        restWithBoxedFriction(world, resting, s, step_s, wrenches, stats);
+      }
       return;
     }
     last_change = change;
@@ -258,25 +345,29 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
     r = solveContactLcp(lcp.problem, stats);
     if (unusable(r, lcp.problem)) {
       ++stats.iterative_fallbacks;
-      restIslandIteratively(world, resting, s, step_s, wrenches, stats);
+      iterate();
       return;
     }
   }
   addForces(world, lcp.rows, r.f, wrenches);
   if (m > 0) addForces(world, slide_rows, g, wrenches);
+  if (memory && step_s > 0) rememberForces(world, resting, lcp, r.f, slide_rows, slide_contact, g, step_s, *memory);
 }
 
 }  // namespace
 
 void addRestingForces(const World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                      std::vector<Wrench>& wrenches, ContactSolveStats& stats, double step_s) {
+                      std::vector<Wrench>& wrenches, ContactSolveStats& stats, double step_s,
+                      RestingMemory* memory) {
+  if (memory) memory->next.clear();
   std::vector<const Contact*> resting;
   for (const Contact& c : contacts)
     if (classify(world, c, s) == ContactClass::Resting) resting.push_back(&c);
   stats.resting += static_cast<int>(resting.size());
   // Wrenches of one island depend only on that island's bodies, so the order is immaterial.
   for (const std::vector<const Contact*>& island : splitIntoIslands(world, resting))
-    restIsland(world, island, s, step_s, wrenches, stats);
+    restIsland(world, island, s, step_s, wrenches, stats, memory);
+  if (memory) memory->last.replace(std::move(memory->next));
 }
 
 }  // namespace tumble

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dynamics/contact.h"
+#include "dynamics/impulse_memory.h"
 #include "dynamics/integrator.h"
 #include "dynamics/world.h"
 
@@ -47,8 +48,18 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
 // forces on entry (they determine the accelerations the contacts must cancel). Islands of more
 // than settings.max_direct_rows rows are solved iteratively; there a sliding contact's friction
 // stops at what would halt the slide within step_s (0: exactly mu f_n).
+// `memory` (optional) carries the impulses of islands too large to pivot from one call to the
+// next: they are then solved at the velocity level, warm-started (contact_solver.cpp).
+struct RestingMemory {
+  ImpulseMemory last;                 // impulses over step_s (N s on B, world axes) of the last call
+  std::vector<ImpulseRecord> next;    // this call's, gathered while solving
+};
+// Contacts nearer than this (m, across the normal, in A's frame) to last call's point on the same
+// pair of bodies are the same contact (as in the time-stepping model).
+inline constexpr double kRestingMatchRadius = 5e-3;
+
 void addRestingForces(const World& world, const std::vector<Contact>& contacts,
                       const ContactSettings& settings, std::vector<Wrench>& wrenches,
-                      ContactSolveStats& stats, double step_s = 0);
+                      ContactSolveStats& stats, double step_s = 0, RestingMemory* memory = nullptr);
 
 }  // namespace tumble

@@ -79,7 +79,7 @@ double Pipeline::substep(World& world, const StepSettings& settings, double rema
     else for (Wrench& w : wrenches_) w = Wrench{};
   });
   if (has_contacts_)
-    timed(Resting, [&] { addRestingForces(world, contacts_now_, settings.contact, wrenches_, counters_.contacts, settings.dt); });
+    timed(Resting, [&] { addRestingForces(world, contacts_now_, settings.contact, wrenches_, counters_.contacts, settings.dt, &resting_memory_); });
 
   double h = has_contacts_ ? std::min(remaining, tunnellingBound(world, remaining)) : remaining;
   StepSettings sub = settings;

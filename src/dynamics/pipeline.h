@@ -98,6 +98,7 @@ class Pipeline {
   std::vector<Watch> watched_;
   std::vector<Contact> landing_points_;
   std::vector<Wrench> wrenches_;
+  RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
   BodySnapshot snapshot_;
   double min_thickness_ = 0;
   std::vector<double> body_radius_;

@@ -1,7 +1,7 @@
 // Hard case 12 (issue 6): a chain of 30 dominoes, the first tipped past its critical angle: all
 // fall, in order, and the speed of the wave agrees within 1 % between dt and dt/2.
-// Horizon 3.5 s (the wave reaches the last domino at about 2.35 s); two runs, about 20 s of wall
-// time together on the 2-core machine.
+// Horizon 3.5 s (the wave reaches the last domino at about 2.35 s); two runs, about 5 minutes of
+// wall time together on the 2-core machine (about 13 sub-steps per step, 91 % in the resting solve).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -47,7 +47,7 @@ double waveSpeed(const std::vector<double>& fell) {
   return 1 / slope;
 }
 
-// The two runs, once per test run (both test cases read them): index 0 at dt, 1 at dt/2.
+// The two runs, once per test run: index 0 at dt, 1 at dt/2.
 const std::vector<double>& runAt(int divisor) {
   static const std::vector<double> runs[2] = {fallTimes(1), fallTimes(2)};
   return runs[divisor - 1];
@@ -55,6 +55,7 @@ const std::vector<double>& runAt(int divisor) {
 
 }  // namespace
 
+// Both cases read the same two simulations; CTest runs them in one process (tests/hard/CMakeLists.txt).
 TEST_CASE("dominoes: all 30 fall, in order, at dt and dt/2", "[hard][dominoes]") {
   for (int divisor : {1, 2}) {
     const std::vector<double>& fell = runAt(divisor);
@@ -66,19 +67,15 @@ TEST_CASE("dominoes: all 30 fall, in order, at dt and dt/2", "[hard][dominoes]")
   }
 }
 
-// Was a known failure at 1.19 % (1.48079 m/s at dt = 1/240 against 1.46334 m/s at 1/480) until
-// back-stepping stopped bisecting on impacts the narrow phase had missed at the start of a step
-// (pipeline.cpp, "too deep to go back for") and failed pivoting solves stopped being used as they
-// were (contact_solver.cpp): 1.45227 against 1.44150 m/s, 0.75 %. The least-squares speed over
-// dominoes 5-30, fall times interpolated within the step.
-//
-// Known failure again since session 5: 1.48456 against 1.46180 m/s, 1.56 %. The projection that
-// turns a landing pair about its resting points and holds them at half the tolerance (it fixed
-// the rocking box, the 10000:1 stack and the pile's overlaps: position_projection.h) moves the
-// leaning dominoes differently at the two steps. With the resting points left where they were
-// the wave agreed (0.75 %) but the 1000:1 stack blew up at dt = 1/60 and the pile overlapped by
-// 3.5 mm; that trade was judged the worse one.
-TEST_CASE("dominoes: the wave speed agrees within 1 % between dt and dt/2 (reached: 1.56 %)",
+// The least-squares speed over dominoes 5-30, fall times interpolated within the step. A known
+// failure, and a fragile figure: it was 1.19 % until session 3, 0.75 % after session 3's fixes,
+// 1.56 % after session 5's projection. In session 6, solving large and stopped-short resting
+// islands at the velocity level made it 0.35 % (1.50149 against 1.50669 m/s); then a change at
+// rounding level alone (the remembered impulses computed as (p / dt) * dt instead of p) made it
+// 1.37 % (1.48384 against 1.50449 m/s, this build). The chain amplifies rounding differences to
+// about a percent of its wave speed; until the agreement holds within 1 % under such changes, it
+// stays marked.
+TEST_CASE("dominoes: the wave speed agrees within 1 % between dt and dt/2 (reached: 1.37 %)",
           "[hard][dominoes][!shouldfail]") {
   double coarse = waveSpeed(runAt(1)), fine = waveSpeed(runAt(2));
   INFO("wave speed " << coarse << " m/s at dt, " << fine << " m/s at dt/2: " << 100 * (coarse / fine - 1) << " %");
