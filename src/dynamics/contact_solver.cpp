@@ -130,8 +130,7 @@ void stopResidualSlip(const World& world, const std::vector<ContactRow>& rows, c
   }
 }
 
-// Without a memory (a single solve, as in the redundant-contact tests), the fallback when dynamic
-// friction cannot be found by iteration: every contact gets boxed
+// The fallback when dynamic friction cannot be found by iteration: every contact gets boxed
 // friction rows (|f_t| <= mu f_n, asking for zero tangential acceleration), as ODE and Bullet treat
 // all contacts. Always bounded (A is positive semi-definite); a sliding contact is then held by
 // at most mu f_n for this sub-step instead of being slowed by exactly mu f_n. Counted.
@@ -330,12 +329,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
       next[k] = resting[slide_contact[k]]->friction * std::max(0.0, r.f[lcp.normal_row[slide_contact[k]]]);
     double change = (next - g).cwiseAbs().maxCoeff();
     if (pass > 0 && change > last_change) {
-      if (memory && step_s > 0) {
-        ++stats.friction_fallbacks;
-        iterate();
-      } else {
-        restWithBoxedFriction(world, resting, s, step_s, wrenches, stats);
-      }
+      restWithBoxedFriction(world, resting, s, step_s, wrenches, stats);
       return;
     }
     last_change = change;
