@@ -147,11 +147,13 @@ void restWithBoxedFriction(const World& world, const std::vector<const Contact*>
   addForces(world, lcp.rows, r.f, wrenches);
 }
 
-// Without a memory (a single solve): rows (normal; two tangents for a sticking contact, one
-// against the slide for a sliding one) solved by projected Gauss-Seidel on the accelerations,
-// from zero, without forming A (row_gauss_seidel.h). The pipeline passes a memory and gets
-// restIslandAtVelocityLevel instead: from zero at every sub-step this does not converge on a
-// pyramid or a pile within 200 sweeps. Sliding friction is
+// Rows (normal; two tangents for a sticking contact, one against the slide for a sliding one)
+// solved by projected Gauss-Seidel on the accelerations, from zero, without forming A
+// (row_gauss_seidel.h): the fallback when pivoting stops short, and for large islands without a
+// memory. With a memory (the pipeline's calls) large islands get restIslandAtVelocityLevel
+// instead: from zero at every sub-step this does not converge on a pyramid or a pile within 200
+// sweeps. (Routing the stopped-short fallbacks there too was tried: it moved the domino wave
+// speed by several percent between runs and made the pile slower; not kept.) Sliding friction is
 // mu f_n against the slide, or less where that would reverse the slide within `step_s`.
 void restIslandIteratively(const World& world, const std::vector<const Contact*>& resting,
                            const ContactSettings& s, double step_s, std::vector<Wrench>& wrenches,
@@ -265,14 +267,11 @@ void restIslandAtVelocityLevel(const World& world, const std::vector<const Conta
 
 void restIsland(const World& world, const std::vector<const Contact*>& resting, const ContactSettings& s,
                 double step_s, std::vector<Wrench>& wrenches, ContactSolveStats& stats, RestingMemory* memory) {
-  // The iterative solve: at the velocity level, warm-started, when there is a memory to start from.
-  auto iterate = [&] {
+  // Pivoting costs the cube of the rows; past max_direct_rows the iterative solve takes over: at
+  // the velocity level, warm-started, when there is a memory to start from.
+  if (3 * resting.size() > static_cast<std::size_t>(s.max_direct_rows)) {
     if (memory && step_s > 0) restIslandAtVelocityLevel(world, resting, step_s, wrenches, stats, *memory);
     else restIslandIteratively(world, resting, s, step_s, wrenches, stats);
-  };
-  // Pivoting costs the cube of the rows; past max_direct_rows the iterative solve takes over.
-  if (3 * resting.size() > static_cast<std::size_t>(s.max_direct_rows)) {
-    iterate();
     return;
   }
   // A pivoting solve that stops short (pivot or friction-pass cap) with forces that do not satisfy
@@ -315,7 +314,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
   lcp::LcpResult r = solveContactLcp(lcp.problem, stats);
   if (unusable(r, lcp.problem)) {
     ++stats.iterative_fallbacks;
-    iterate();
+    restIslandIteratively(world, resting, s, step_s, wrenches, stats);
     return;
   }
   // The iteration contracts when dynamic friction changes the normal forces less than it is
@@ -339,7 +338,7 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
     r = solveContactLcp(lcp.problem, stats);
     if (unusable(r, lcp.problem)) {
       ++stats.iterative_fallbacks;
-      iterate();
+      restIslandIteratively(world, resting, s, step_s, wrenches, stats);
       return;
     }
   }
