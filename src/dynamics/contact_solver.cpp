@@ -192,17 +192,22 @@ void restIslandIteratively(const World& world, const std::vector<const Contact*>
   addForces(world, lcp.rows, r.f, wrenches);
 }
 
+// The rows [first, end) of contact k in buildContactLcp's layout (its normal row, then its friction rows).
+std::pair<int, int> rowsOfContact(const ContactLcp& lcp, std::size_t k) {
+  const int end = k + 1 < lcp.normal_row.size() ? lcp.normal_row[k + 1] : static_cast<int>(lcp.rows.size());
+  return {lcp.normal_row[k], end};
+}
+
 // Per contact of an island, the impulse over step_s its rows' forces give (N s on B, world axes),
 // remembered so that the island starts warm if it must be solved iteratively next time.
 void rememberForces(const World& world, const std::vector<const Contact*>& resting, const ContactLcp& lcp,
                     const Eigen::VectorXd& f, const std::vector<ContactRow>& extra_rows,
                     const std::vector<int>& extra_contact, const Eigen::VectorXd& extra_f, double step_s,
                     RestingMemory& memory) {
-  const int n = static_cast<int>(lcp.rows.size());
   std::vector<Eigen::Vector3d> impulse(resting.size(), Eigen::Vector3d::Zero());
   for (std::size_t k = 0; k < resting.size(); ++k) {
-    const int r_end = k + 1 < resting.size() ? lcp.normal_row[k + 1] : n;
-    for (int r = lcp.normal_row[k]; r < r_end; ++r) impulse[k] += f[r] * step_s * lcp.rows[r].dir;
+    auto [r0, r_end] = rowsOfContact(lcp, k);
+    for (int r = r0; r < r_end; ++r) impulse[k] += f[r] * step_s * lcp.rows[r].dir;
   }
   for (std::size_t j = 0; j < extra_rows.size(); ++j) impulse[extra_contact[j]] += extra_f[j] * step_s * extra_rows[j].dir;
   for (std::size_t k = 0; k < resting.size(); ++k) {
@@ -244,14 +249,11 @@ void restIslandAtVelocityLevel(const World& world, const std::vector<const Conta
   const int n = static_cast<int>(lcp.rows.size());
   Eigen::VectorXd b = freeAccelerations(world, lcp, wrenches) * step_s;
   for (int r = 0; r < n; ++r) b[r] += rowVelocity(world, lcp.rows[r]);
-  auto rowsOfContact = [&](std::size_t k) {
-    return std::make_pair(lcp.normal_row[k], k + 1 < resting.size() ? lcp.normal_row[k + 1] : n);
-  };
   Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
   for (std::size_t k = 0; k < resting.size(); ++k) {
-    const ImpulseRecord* last = memory.last.find(world, *resting[k], kRestingMatchRadius);
+    const ImpulseRecord* last = memory.last.find(world, *resting[k], ImpulseMemory::kMatchRadius);
     if (!last) continue;
-    auto [r0, r_end] = rowsOfContact(k);
+    auto [r0, r_end] = rowsOfContact(lcp, k);
     for (int r = r0; r < r_end; ++r) start[r] = last->impulse.dot(lcp.rows[r].dir);
     start[r0] = std::max(0.0, start[r0]);
   }

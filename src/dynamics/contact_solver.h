@@ -44,20 +44,19 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
                        const ContactSettings& settings, double min_bounce_speed,
                        ContactSolveStats& stats);
 
-// Adds the resting-contact forces (normal and friction) to `wrenches`, which hold the applied
-// forces on entry (they determine the accelerations the contacts must cancel). Islands of more
-// than settings.max_direct_rows rows are solved iteratively; there a sliding contact's friction
-// stops at what would halt the slide within step_s (0: exactly mu f_n).
-// `memory` (optional) carries the impulses of islands too large to pivot from one call to the
-// next: they are then solved at the velocity level, warm-started (contact_solver.cpp).
+// The resting-force solve's memory between calls: each contact's impulse over step_s (every
+// island's, pivoted ones too), so that an island too large to pivot starts Gauss-Seidel warm.
 struct RestingMemory {
   ImpulseMemory last;                 // impulses over step_s (N s on B, world axes) of the last call
   std::vector<ImpulseRecord> next;    // this call's, gathered while solving
 };
-// Contacts nearer than this (m, across the normal, in A's frame) to last call's point on the same
-// pair of bodies are the same contact (as in the time-stepping model).
-inline constexpr double kRestingMatchRadius = 5e-3;
 
+// Adds the resting-contact forces (normal and friction) to `wrenches`, which hold the applied
+// forces on entry (they determine the accelerations the contacts must cancel). Islands of more
+// than settings.max_direct_rows rows are solved iteratively: with a `memory` (and step_s > 0) at
+// the velocity level over step_s, warm-started from the last call (contact_solver.cpp,
+// restIslandAtVelocityLevel); without one on the accelerations, from zero, where a sliding
+// contact's friction stops at what would halt the slide within step_s (0: exactly mu f_n).
 void addRestingForces(const World& world, const std::vector<Contact>& contacts,
                       const ContactSettings& settings, std::vector<Wrench>& wrenches,
                       ContactSolveStats& stats, double step_s = 0, RestingMemory* memory = nullptr);

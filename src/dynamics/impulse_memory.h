@@ -27,6 +27,10 @@ class ImpulseMemory {
  public:
   // The contact point in body A's frame.
   static Eigen::Vector3d localPoint(const World& world, const Contact& c);
+  // Contacts nearer than this (m, across the normal, in A's frame) to a recorded point on the
+  // same pair of bodies are that contact: both the time-stepping model and the Baraff model's
+  // large resting islands match with it.
+  static constexpr double kMatchRadius = 5e-3;
   // Last step's record nearest to contact c (same bodies, within `radius` m), or nullptr.
   const ImpulseRecord* find(const World& world, const Contact& c, double radius) const;
   // Replaces the records with this step's (any order; sorted here).

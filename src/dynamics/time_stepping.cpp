@@ -88,7 +88,7 @@ void TimeStepper::applyContactImpulses(World& world, const std::vector<Contact>&
   for (std::size_t i = 0; i < m; ++i) {
     const Contact& c = contacts[i];
     all[i] = &c;
-    last[i] = memory_.find(world, c, kMatchRadius);
+    last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
     owed[i] = last[i] ? last[i]->landing_speed : 0;
     const double gap = -c.depth;
     want[i] = -std::max(gap, 0.0) / dt;

@@ -37,8 +37,6 @@ class TimeStepper {
                             const std::vector<double>& approach, const StepSettings& settings,
                             double min_bounce_speed, ContactSolveStats& stats);
 
-  // Contacts nearer than this (m) to last step's point on the same pair of bodies are matched.
-  static constexpr double kMatchRadius = 5e-3;
 
  private:
   ImpulseMemory memory_;
