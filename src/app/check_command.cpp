@@ -51,7 +51,7 @@ int run(const SceneOptions& o) {
   std::printf("pipeline  step %.6g s (%d per frame), gravity (%g, %g, %g) m/s^2\n", scene.simulation.dt_s,
               scene.simulation.steps_per_frame, scene.simulation.gravity_m_s2.x(),
               scene.simulation.gravity_m_s2.y(), scene.simulation.gravity_m_s2.z());
-  for (const std::string& line : Pipeline(built.world, built.step).describe()) std::printf("  %s\n", line.c_str());
+  for (const std::string& line : Pipeline(built.world, built.step).describe(built.step)) std::printf("  %s\n", line.c_str());
   std::printf("render    %dx%d, %d fps, %d frames (%.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
               r.width, r.height, r.fps, r.frames, r.frames / double(r.fps), r.samples, r.shadow_map_size,
               scene.lighting.directional.size());

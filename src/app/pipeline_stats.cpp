@@ -27,6 +27,9 @@ void printPipelineStats(const Pipeline& pipeline) {
                "%ld sweeps, %ld solves at the sweep cap)\n",
                c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
                c.contacts.unconverged_sweeps);
+  const SleepCounters& s = pipeline.sleepCounters();
+  std::fprintf(stderr, "  sleeping: %ld islands fell asleep, %ld woke; %d bodies asleep at the end\n",
+               s.islands_slept, s.islands_woken, s.asleep_now);
 }
 
 }  // namespace tumble

@@ -18,6 +18,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--contact-model", o.contact_model,
                      "baraff | time_stepping (overrides simulation.contact_model)")
       ->check(CLI::IsMember({"baraff", "time_stepping"}));
+  command.add_flag("--no-sleep", o.no_sleep,
+                   "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.sleep)");
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
 }
@@ -42,6 +44,7 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
     scene.simulation.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
   if (!o.contact_model.empty())
     scene.simulation.contact_model = o.contact_model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
+  if (o.no_sleep) scene.simulation.sleep = false;
   return scene;
 }
 

@@ -29,6 +29,8 @@ class SweepAndPrune {
   // Proxies are added once, when the world is built; the index returned names the proxy.
   int add(const BroadPhaseProxy& proxy);
   void setBox(int proxy, const Aabb& box) { proxies_[proxy].box = box; }
+  // A sleeping body is static until it wakes (dynamics/sleeping.h): its pairs with static proxies go.
+  void setStatic(int proxy, bool is_static) { proxies_[proxy].is_static = is_static; }
   const BroadPhaseProxy& proxy(int i) const { return proxies_[i]; }
   int size() const { return int(proxies_.size()); }
   const std::vector<BroadPhaseProxy>& proxies() const { return proxies_; }

@@ -111,6 +111,14 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
   }
 }
 
+void ContactDetector::setFixed(int body, bool fixed) {
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    if (pieces_[i].body != body) continue;
+    broad_.setStatic(static_cast<int>(i), fixed);
+    near_broad_.setStatic(static_cast<int>(i), fixed);
+  }
+}
+
 void ContactDetector::nearPairs(const World& world, const std::vector<double>& reach,
                                 std::vector<NearPair>& out) {
   out.clear();

@@ -54,6 +54,10 @@ class ContactDetector {
   // (m) overlap. Ground planes are left out: a half-space cannot be passed through.
   void nearPairs(const World& world, const std::vector<double>& reach, std::vector<NearPair>& out);
 
+  // A body falling asleep is static to the broad phases until it wakes (sleeping.h): no pairs with
+  // static pieces or other sleepers, and no ground test.
+  void setFixed(int body, bool fixed);
+
   bool hasCollidablePairs() const { return has_pairs_; }
   // The thinnest width of any piece (m): infinity when there are none.
   double thinnestPiece() const { return thinnest_; }

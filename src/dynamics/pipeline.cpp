@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_lcp.h"
@@ -14,7 +15,7 @@
 namespace tumble {
 namespace {
 
-const char* kStageNames[] = {"detect", "collide", "forces", "resting", "integrate", "back-step", "correct"};
+const char* kStageNames[] = {"detect", "collide", "forces", "resting", "integrate", "back-step", "correct", "sleep"};
 
 int movingBodies(const World& world) {
   int n = 0;
@@ -32,7 +33,8 @@ Pipeline::Pipeline(const World& world, const StepSettings& settings)
       model_(settings.model),
       dt_(settings.dt),
       detector_(world),
-      wrenches_(world.bodies.size()) {
+      wrenches_(world.bodies.size()),
+      sleep_(world) {
   has_contacts_ = detector_.hasCollidablePairs();
   min_thickness_ = detector_.thinnestPiece();
   for (const RigidBody& body : world.bodies) {
@@ -48,6 +50,7 @@ Pipeline::Pipeline(const World& world, const StepSettings& settings)
 void Pipeline::step(World& world, const StepSettings& settings) {
   if (settings.model == ContactModel::TimeStepping) {
     timeStep(world, settings);
+    settleAtRest(world, settings);
     return;
   }
   double start_time = world.time;
@@ -60,12 +63,40 @@ void Pipeline::step(World& world, const StepSettings& settings) {
   }
   if (remaining > 1e-12 * settings.dt) ++counters_.stuck_substeps;
   world.time = start_time + settings.dt;
+  settleAtRest(world, settings);
+}
+
+void Pipeline::wakeTouched(World& world, const StepSettings& settings) {
+  if (sleep_.counters().asleep_now == 0) return;
+  bool woke = false;
+  timed(Sleep, [&] { woke = sleep_.wakeTouched(world, contacts_now_, detector_); });
+  while (woke) {
+    timed(Detect, [&] {
+      if (settings.model == ContactModel::TimeStepping) {
+        bodyReach(world, body_radius_, settings.dt, reach_);   // the woken bodies can move now
+        detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
+      } else {
+        detector_.detect(world, settings.contact, contacts_now_, &pairs_now_);
+      }
+    });
+    timed(Sleep, [&] { woke = sleep_.wakeTouched(world, contacts_now_, detector_); });
+  }
+}
+
+// After a whole step, so that a body is judged by the velocity the step leaves it with.
+void Pipeline::settleAtRest(World& world, const StepSettings& settings) {
+  if (!has_contacts_ || !settings.sleep.enabled) return;
+  bool slept = false;
+  timed(Sleep, [&] { slept = sleep_.settle(world, contacts_now_, settings.sleep, settings.dt, detector_); });
+  // The sleepers' contacts with each other and the ground are gone from the next detection.
+  if (slept) contacts_fresh_ = false;
 }
 
 double Pipeline::substep(World& world, const StepSettings& settings, double remaining) {
   ++counters_.substeps;
   if (has_contacts_ && !contacts_fresh_)
     timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
+  if (has_contacts_) wakeTouched(world, settings);
   if (has_contacts_) {
     bool hit = false;
     const double min_bounce = minBounce(world, settings);   // slower impacts are inelastic
@@ -304,7 +335,22 @@ void Pipeline::correctPenetration(World& world, const StepSettings& settings) {
   }
 }
 
-std::vector<std::string> Pipeline::describe() const {
+std::vector<std::string> Pipeline::describe(const StepSettings& settings) const {
+  std::vector<std::string> lines = describeStages();
+  if (!has_contacts_) return lines;
+  char line[200];
+  if (settings.sleep.enabled)
+    std::snprintf(line, sizeof line,
+                  "sleep       islands slower than %g m/s and %g rad/s for %g s, resting on something "
+                  "fixed, freeze until touched",
+                  settings.sleep.speed_m_s, settings.sleep.spin_rad_s, settings.sleep.after_s);
+  else
+    std::snprintf(line, sizeof line, "sleep       off: every body is simulated to the end");
+  lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> Pipeline::describeStages() const {
   std::vector<std::string> lines;
   std::string moving = std::to_string(moving_) + (moving_ == 1 ? " moving body" : " moving bodies");
   std::string integrate = std::string("integrate   ") +

@@ -10,6 +10,7 @@
 //   integrate  (x, q, P, L) over the sub-step      integrator.cpp
 //   back-step  bisection to the first contact      time_of_impact.cpp
 //   correct    project out residual penetration    pipeline.cpp (correctPenetration)
+//   sleep      freeze islands at rest; wake on touch  sleeping.cpp
 //
 // With the time-stepping contact model (time_stepping.h, pipeline_time_stepping.cpp) a step is
 // instead: detect (within a speculative margin), correct, forces, resting (the velocity-level
@@ -27,6 +28,7 @@
 #include "dynamics/contact_detection.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/integrator.h"
+#include "dynamics/sleeping.h"
 #include "dynamics/step_settings.h"
 #include "dynamics/time_stepping.h"
 #include "dynamics/world.h"
@@ -53,11 +55,12 @@ class Pipeline {
   void step(World& world, const StepSettings& settings);
 
   // One line per stage: what it does in this scene (for `tumble check`).
-  std::vector<std::string> describe() const;
+  std::vector<std::string> describe(const StepSettings& settings) const;
   const std::vector<StageTime>& profile() const { return profile_; }
   const PipelineCounters& counters() const { return counters_; }
   // The contacts found at the end of the last step (for overlays and tests).
   const std::vector<Contact>& contacts() const { return contacts_now_; }
+  const SleepCounters& sleepCounters() const { return sleep_.counters(); }
 
  private:
   struct Watch {                // back-stepping: a pair to time
@@ -66,7 +69,7 @@ class Pipeline {
     double near = 0;             // m: how close to a resting point a point is that point
     std::vector<Eigen::Vector3d> resting;
   };
-  enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, StageCount };
+  enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, Sleep, StageCount };
   double substep(World& world, const StepSettings& settings, double remaining);
   void timeStep(World& world, const StepSettings& settings);
   double tunnellingBound(const World& world, double h);
@@ -75,6 +78,12 @@ class Pipeline {
   static double minBounce(const World& world, const StepSettings& settings);
   double watchedDepth(const World& world, const Watch& w, const StepSettings& settings);
   void correctPenetration(World& world, const StepSettings& settings);
+  std::vector<std::string> describeStages() const;
+  // Wakes sleeping islands that `contacts_now_` shows touched by awake bodies, and detects again
+  // (with each body's reach for the time-stepping model) until none is: a solve never meets a
+  // sleeper.
+  void wakeTouched(World& world, const StepSettings& settings);
+  void settleAtRest(World& world, const StepSettings& settings);
   void projectContacts(World& world, const StepSettings& settings);   // time stepping
   static constexpr int kProjectionPasses = 8;
   template <typename F> void timed(Stage stage, F&& work) {
@@ -98,7 +107,8 @@ class Pipeline {
   std::vector<Watch> watched_;
   std::vector<Contact> landing_points_;
   std::vector<Wrench> wrenches_;
-  RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
+  RestingMemory resting_memory_;
+  SleepKeeper sleep_;   // warm start of resting islands too large to pivot
   BodySnapshot snapshot_;
   double min_thickness_ = 0;
   std::vector<double> body_radius_;

@@ -19,6 +19,7 @@ void Pipeline::timeStep(World& world, const StepSettings& settings) {
       bodyReach(world, body_radius_, dt, reach_);
       detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
     });
+    wakeTouched(world, settings);
     timed(Correct, [&] { projectContacts(world, settings); });
   }
   // Approach speeds before gravity's impulse: the speed an impact reverses.

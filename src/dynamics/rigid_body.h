@@ -16,7 +16,9 @@ namespace tumble {
 struct RigidBody {
   std::string name;
   ShapeKind shape = ShapeKind::Box;
-  bool is_static = false;
+  bool is_static = false;   // never moves: from the scene, or asleep (below)
+  bool asleep = false;      // frozen by sleeping.h until something awake touches it; static meanwhile
+  bool fixedByScene() const { return is_static && !asleep; }
 
   // constant properties
   double mass = 0, inv_mass = 0;                                   // kg, 1/kg (0 when static)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "dynamics/contact.h"
+#include "dynamics/sleeping.h"
 #include "scene/scene.h"
 
 namespace tumble {
@@ -12,6 +13,7 @@ struct StepSettings {
   ContactSettings contact;                        // detection margin, tolerances, thresholds
   ContactModel model = ContactModel::Baraff;      // event-driven, or velocity-level time stepping
   int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
+  SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)
 };
 
 }  // namespace tumble

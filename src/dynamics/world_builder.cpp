@@ -92,6 +92,8 @@ BuiltWorld buildWorld(const Scene& scene) {
   out.step.contact.tolerance_m = scene.simulation.contact_tolerance_m;
   out.step.model = scene.simulation.contact_model;
   out.step.time_stepping_sweeps = scene.simulation.time_stepping_sweeps;
+  out.step.sleep = {scene.simulation.sleep, scene.simulation.sleep_speed_m_s, scene.simulation.sleep_spin_rad_s,
+                    scene.simulation.sleep_after_s};
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
   return out;

@@ -14,6 +14,7 @@
 
 #include "base/error.h"
 #include "geometry/convex_hull.h"
+#include "geometry/hull_simplify.h"
 #include "geometry/mesh_import_checks.h"
 #include "geometry/mesh_convexity.h"
 
@@ -104,6 +105,8 @@ std::vector<MeshInstance> readMeshes(const std::filesystem::path& file, double s
 // boxes and spheres have the same bounds, and positions stop at 1e9 m. A wrong unit or scale is the
 // usual cause (millimetres read as metres), so the message points there.
 constexpr double kMinSide = 1e-6, kMaxSide = 1e6, kMaxCoordinate = 1e9;   // m
+// Hulls above this many vertices are simplified (hull_simplify.h): PhysX's vertex limit.
+constexpr int kMaxHullVertices = 255;
 
 struct MeshView {
   const std::string& name;
@@ -142,6 +145,17 @@ ConvexPiece convexPieceOf(const std::string& mesh_name, const std::vector<Vector
                                         "piece needs volume");
   }
   if (warning && !isConvexMesh(points, triangles, *hull)) *warning = "is not convex; using its convex hull";
+  if (std::optional<SimplifiedHull> smaller = simplifyHull(*hull, kMaxHullVertices)) {
+    if (warning) {
+      std::ostringstream msg;
+      msg << (warning->empty() ? "" : "; ") << "its hull has " << hull->vertices.size()
+          << " vertices, more than the narrow phase takes (" << kMaxHullVertices << "); using the hull of "
+          << smaller->piece.vertices.size() << " of them, at most " << smaller->deviation_m
+          << " m inside the full hull";
+      *warning += msg.str();
+    }
+    hull = std::move(smaller->piece);
+  }
   hull->name = mesh_name;
   return std::move(*hull);
 }

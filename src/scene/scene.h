@@ -87,6 +87,10 @@ struct SimulationSpec {
   double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
   ContactModel contact_model = ContactModel::Baraff;
   int time_stepping_sweeps = 200;                      // Gauss-Seidel sweeps per step at most
+  bool sleep = true;                                   // quiet islands freeze (dynamics/sleeping.h)
+  double sleep_speed_m_s = 0.01;                       // ... when slower than this
+  double sleep_spin_rad_s = 0.035;                     // ... and turning slower than this
+  double sleep_after_s = 0.5;                          // ... for this long
 };
 
 struct Scene {

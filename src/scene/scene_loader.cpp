@@ -65,6 +65,10 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
                           ? ContactModel::Baraff
                           : ContactModel::TimeStepping;
   sim.time_stepping_sweeps = in.integer("time_stepping_sweeps", sim.time_stepping_sweeps, 1, 100000);
+  sim.sleep = in.boolean("sleep", sim.sleep);
+  sim.sleep_speed_m_s = in.number("sleep_speed_m_s", sim.sleep_speed_m_s, {0, 10, true, false});
+  sim.sleep_spin_rad_s = in.number("sleep_spin_rad_s", sim.sleep_spin_rad_s, {0, 100, true, false});
+  sim.sleep_after_s = in.number("sleep_after_s", sim.sleep_after_s, {0, 1e6, true, false});
   // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
   // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
   // Without dt_s the step is the one nearest 1/240 s that divides the frame interval.

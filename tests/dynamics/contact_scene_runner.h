@@ -18,7 +18,8 @@ struct SceneRun {
 // Simulates scenes/NAME.json for `seconds` (rounded to whole frames), calling `on_step` after
 // every step. Penetration is measured after every `penetration_every`-th step (all pairs by SAT:
 // costly in a pile) and after the last.
-// `edit` (if set) changes the loaded scene first (another contact model, say).
+// `edit` (if set) changes the loaded scene first (another contact model, say). Sleeping is off
+// unless `edit` turns it on: the tests measure what the contact solve reaches.
 SceneRun runScene(const std::string& name, double seconds,
                   const std::function<void(const World&)>& on_step = {}, int penetration_every = 1,
                   const std::function<void(Scene&)>& edit = {});

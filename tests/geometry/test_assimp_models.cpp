@@ -32,9 +32,10 @@ const fs::path kModels = "/usr/share/assimp/models";
 // wall time, so that a loaded machine (ctest -j, other builds) cannot make a slow file look hung;
 // the wall-clock alarm at ten times the limit only catches a child blocked without using CPU.
 #ifdef TUMBLE_SANITIZED
-// Under ASan + UBSan AC/sample_subdiv.ac takes 313 s of CPU (session 6), 300 s called it hung:
+// Under ASan + UBSan AC/sample_subdiv.ac took 313 s of CPU (session 6), 300 s called it hung:
 // not assimp's import (5 s) but the convexity check of its one hull (piece_validity.h), 82 038
-// vertices against 137 192 faces.
+// vertices against 137 192 faces. Since session 7 such hulls are cut to 255 vertices
+// (geometry/hull_simplify.h) and the file takes about 2 s in Release.
 constexpr unsigned kTimeLimit = 900;
 #else
 constexpr unsigned kTimeLimit = 60;

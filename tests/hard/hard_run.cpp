@@ -9,7 +9,11 @@
 namespace tumble::hard {
 
 Scene loadHardScene(const std::string& name) {
-  return loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/hard/" + name + ".json");
+  Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/hard/" + name + ".json");
+  // The hard cases hold the contact solve to their thresholds: sleeping, which would freeze
+  // whatever it reached, is off unless a test turns it on.
+  scene.simulation.sleep = false;
+  return scene;
 }
 
 HardRun simulate(const Scene& scene, double seconds, const std::function<bool(const World&)>& on_step) {
