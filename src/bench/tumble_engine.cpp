@@ -131,6 +131,9 @@ EngineSetting setting(const std::string& name, TumbleOptions opt, bool on_piles)
 std::vector<EngineSetting> tumbleSettings() {
   return {
       setting("tumble-rk4", {Integrator::Rk4, 1e-6}, true),
+      // The Baraff model with every resting island at the velocity level (pivoting_max_rows 0):
+      // the setting for piles (README, "Where tumble is behind: piles").
+      setting("tumble-rk4-gs", {Integrator::Rk4, 1e-6, ContactModel::Baraff, 200, 0}, false),
       setting("tumble-rk4-tol1e-4", {Integrator::Rk4, 1e-4}, false),
       setting("tumble-semi", {Integrator::SemiImplicitEuler, 1e-6}, false),
       setting("tumble-semi-tol1e-4", {Integrator::SemiImplicitEuler, 1e-4}, false),
