@@ -77,7 +77,18 @@ TEST_CASE("pile: no penetration above 1e-3 m in the first second", "[contact][pi
 // step (39 pieces above 1e-3 m/s), warm-starting that solve (33, 1.5x slower). The time-stepping
 // model rests the same pile to 2e-7 m/s (test_time_stepping.cpp): one velocity-level solve per
 // step, never cut, over contacts within a speculative margin, and its Gauss-Seidel converges.
-TEST_CASE("pile: after 5 s all 100 pieces rest inside the bin (reached: 0.017 m/s)", "[.][contact][pile][!shouldfail]") {
+//
+// Session 7 (commit bdff5fc, near contacts in the velocity-level islands): 0.078 m/s, 0.28 rad/s,
+// 9.1e-4 m deep, 70 s. The pile is chaotic: the end speed of one run says little (0.017 at
+// def6d4b). What kicks settled pieces, counted over 3.5-4.2 s (a piece below 2e-3 m/s faster than
+// 5e-3 m/s after one resting solve and integration): 400 kicks, 367 of them in islands solved
+// exactly by pivoting at the acceleration level, of every size (1 to 21 contacts); 24 in the
+// impulse stage. The LCP is exact for the contacts it is given: a piece resting on an edge, its
+// other corners 10 um up (a projection turned it), turns at the acceleration gravity gives and
+// lands again. Near contacts as bounds on the acceleration, a_n >= -2 (gap + v_n dt) / dt^2, were
+// tried and did not stop it (386 kicks). Solving every island at the velocity level stops it
+// (next test), and sleeping freezes what has settled (the test after).
+TEST_CASE("pile: after 5 s all 100 pieces rest inside the bin (reached: 0.078 m/s)", "[.][contact][pile][!shouldfail]") {
   PileOutcome out = runPile(5);
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
@@ -85,8 +96,11 @@ TEST_CASE("pile: after 5 s all 100 pieces rest inside the bin (reached: 0.017 m/
 }
 
 // The same 5 s with the scene as a user runs it: sleeping on (the scene default; runScene turns it
-// off for the solver tests), so that islands at rest freeze until touched.
-TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin", "[.][contact][pile][sleep]") {
+// off for the solver tests), so that islands at rest freeze until touched. Known failure (session
+// 7, bdff5fc): 0.047 m/s, 0.15 rad/s, 9.1e-4 m deep, 117 s; an island sleeps only when every
+// piece in it is quiet, and the kicks above keep some islands awake (`tumble simulate
+// scenes/pile.json -v`, another run: 72 of 100 asleep at the end, one piece at 9.5e-3 m/s).
+TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (reached: 0.047 m/s)", "[.][contact][pile][sleep][!shouldfail]") {
   PileOutcome out = runPile(5, [](Scene& s) { s.simulation.sleep = true; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
@@ -94,8 +108,13 @@ TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin", "[
 }
 
 // And with every resting island solved at the velocity level with its near contacts
-// ("pivoting_max_rows": 0; contact_solver.cpp, restIslandAtVelocityLevel), sleeping off.
-TEST_CASE("pile: after 5 s with every island at the velocity level all 100 pieces rest inside the bin", "[.][contact][pile]") {
+// ("pivoting_max_rows": 0; contact_solver.cpp, restIslandAtVelocityLevel), sleeping off. Known
+// failure (session 7, bdff5fc): 4.4e-3 m/s, 0.022 rad/s, and 8.1e-3 m deep at one of the test's
+// samples, in 14 s instead of 70. With `tumble simulate` (penetration not measured): two pieces
+// at 0.02 m/s at 5 s; a variant that also took near contacts closing by their own speed rested
+// below 5e-5 m/s from 3.5 s; without near contacts, 7 pieces above 1e-3 m/s at 5 s in twice the
+// time.
+TEST_CASE("pile: after 5 s with every island at the velocity level all 100 pieces rest inside the bin (reached: 8.1e-3 m deep)", "[.][contact][pile][!shouldfail]") {
   PileOutcome out = runPile(5, [](Scene& s) { s.simulation.pivoting_max_rows = 0; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
