@@ -35,6 +35,7 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
     ContactClass k = classify(world, c, s);
     if (k == ContactClass::Separating) continue;
     any |= k == ContactClass::Colliding;
+    stats.colliding += k == ContactClass::Colliding;
     set.push_back(&c);
   }
   if (!any) return false;

@@ -28,6 +28,8 @@ TEST_CASE("cube drop: impact time, bounce apex and no spin", "[contact]") {
     if (rising && cube.velocity().z() <= 0) done = true;
   });
   REQUIRE_FALSE(run.counters.impact_times.empty());
+  // Its four corners were counted as colliding contacts (-v prints the count).
+  CHECK(run.counters.contacts.colliding >= 4);
   // The impact is found by bisection to within the contact tolerance (1e-6 m at 4.4 m/s: 2e-7 s).
   CHECK(std::abs(run.counters.impact_times.front() - std::sqrt(2 / 9.81)) < 1e-4);
   // Apex 0.5 + e^2 h = 0.75 m within 0.5 %: the bounce is exact up to the step's sampling of the apex.
