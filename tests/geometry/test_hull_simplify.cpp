@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 
 #include "geometry/convex_hull.h"
 #include "geometry/hull_simplify.h"
@@ -80,4 +81,57 @@ TEST_CASE("hull simplify: an imported mesh with a large hull is simplified, with
   CHECK(test::convexPieceProblem(piece) == "");
   CHECK_THAT(warning, Catch::Matchers::Contains("its hull has 1000 vertices") &&
                           Catch::Matchers::Contains("m inside the full hull"));
+}
+
+// Random clouds of every awkward kind the hull code knows (all points on the hull, rings of
+// coplanar points, slivers 1000:1, noise at the merge tolerance, far from the origin): whatever
+// the full hull, the simplified one is a valid convex piece of at most 255 of its vertices, and
+// the deviation it reports is the brute-force one.
+TEST_CASE("hull simplify: random awkward clouds give valid pieces within the limit", "[geometry][hull]") {
+  std::mt19937 rng(20261124);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::normal_distribution<double> normal(0, 1);
+  auto onSphere = [&] {
+    Vector3d p(normal(rng), normal(rng), normal(rng));
+    return Vector3d(p.normalized());
+  };
+  int simplified = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int kind = trial % 6;
+    const int n = 300 + static_cast<int>(rng() % 1700);
+    std::vector<Vector3d> cloud;
+    for (int i = 0; i < n; ++i) {
+      Vector3d p;
+      switch (kind) {
+        case 0: p = onSphere(); break;                                                      // all on the hull
+        case 1: {                                                                           // two rings
+          const double a = 2 * M_PI * (rng() % 997) / 997.0;
+          p = {std::cos(a), std::sin(a), (i % 2) ? 0.5 : -0.5};
+          break;
+        }
+        case 2: p = onSphere().cwiseProduct(Vector3d(1, 0.01, 0.001)); break;               // sliver
+        case 3: p = onSphere() * (1 + 1e-7 * unit(rng)); break;                             // noise at the tolerance
+        case 4: p = onSphere() + Vector3d(1e6, -2e5, 3e5); break;                           // far away
+        default: p = Vector3d(unit(rng), unit(rng), unit(rng)) * (i % 3 ? 1.0 : 0.2); break; // uniform inside
+      }
+      cloud.push_back(p);
+    }
+    INFO("trial " << trial << ", kind " << kind << ", " << n << " points");
+    std::optional<ConvexPiece> hull = convexHull(cloud, nullptr);
+    REQUIRE(hull);
+    std::optional<SimplifiedHull> smaller = simplifyHull(*hull, 255);
+    if (hull->vertices.size() <= 255) {
+      CHECK_FALSE(smaller);
+      continue;
+    }
+    REQUIRE(smaller);
+    ++simplified;
+    CHECK(smaller->piece.vertices.size() <= 255);
+    CHECK(test::convexPieceProblem(smaller->piece) == "");
+    for (const Vector3d& v : smaller->piece.vertices)
+      CHECK(std::find(hull->vertices.begin(), hull->vertices.end(), v) != hull->vertices.end());
+    CHECK(smaller->deviation_m >= 0);
+    CHECK(smaller->deviation_m == Approx(farthestOutside(smaller->piece, hull->vertices)).margin(1e-9));
+  }
+  CHECK(simplified >= 30);   // the test is about simplification: most clouds must need it
 }
