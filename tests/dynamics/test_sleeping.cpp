@@ -93,3 +93,20 @@ TEST_CASE("sleeping: off, a resting cube is simulated to the end", "[contact][sl
   runScene("rest", 1, [&](const World& w) { ever_asleep |= w.bodies[1].asleep; });
   CHECK_FALSE(ever_asleep);
 }
+
+TEST_CASE("sleeping: falling asleep and waking are deterministic (bit-identical trajectories)", "[contact][sleep][determinism]") {
+  auto run = [] {
+    return runScene("rest", 2, {}, 1000000, [](Scene& s) {
+      sleepOn(s, ContactModel::Baraff);
+      dropCubeOnTop(s);
+    });
+  };
+  const test::SceneRun one = run(), two = run();
+  REQUIRE(one.trajectory.frames.size() == two.trajectory.frames.size());
+  for (std::size_t f = 0; f < one.trajectory.frames.size(); ++f)
+    for (std::size_t b = 0; b < one.trajectory.frames[f].size(); ++b) {
+      REQUIRE(one.trajectory.frames[f][b].x == two.trajectory.frames[f][b].x);
+      REQUIRE(one.trajectory.frames[f][b].q.coeffs() == two.trajectory.frames[f][b].q.coeffs());
+      REQUIRE(one.trajectory.frames[f][b].v == two.trajectory.frames[f][b].v);
+    }
+}
