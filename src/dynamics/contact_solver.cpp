@@ -369,8 +369,8 @@ void restIsland(const World& world, const std::vector<const Contact*>& resting, 
 // (an impact to come is back-stepping's and the impulses'). Each is appended to the island, solved
 // at the velocity level (`at_velocity`), that its moving bodies belong to; one whose bodies belong
 // to two islands, or to none, is left out, so that no two solves share a body.
-void addNearContacts(const World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                     double step_s, const std::vector<char>& at_velocity,
+void addNearContacts(const World& world, const std::vector<Contact>& contacts,
+                     const std::vector<ContactClass>& classes, double step_s, const std::vector<char>& at_velocity,
                      std::vector<std::vector<const Contact*>>& islands) {
   constexpr int kFixed = -2;   // a static body: belongs to every island
   std::vector<int> island_of(world.bodies.size(), -1);
@@ -382,8 +382,9 @@ void addNearContacts(const World& world, const std::vector<Contact>& contacts, c
       for (int body : {c->a, c->b}) island_of[body] = static_cast<int>(i);
   }
   if (!any) return;
-  for (const Contact& c : contacts) {
-    if (classify(world, c, s) != ContactClass::Separating) continue;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    if (classes[i] != ContactClass::Separating) continue;
     if (std::max(0.0, -c.depth) + normalVelocity(world, c) * step_s < 0) continue;   // an impact to come
     const int ia = world.bodies[c.a].is_static ? kFixed : island_of[c.a];
     const int ib = world.bodies[c.b].is_static ? kFixed : island_of[c.b];
@@ -398,9 +399,10 @@ void addRestingForces(const World& world, const std::vector<Contact>& contacts, 
                       std::vector<Wrench>& wrenches, ContactSolveStats& stats, double step_s,
                       RestingMemory* memory) {
   if (memory) memory->next.clear();
+  std::vector<ContactClass> classes(contacts.size());
   std::vector<const Contact*> resting;
-  for (const Contact& c : contacts)
-    if (classify(world, c, s) == ContactClass::Resting) resting.push_back(&c);
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    if ((classes[i] = classify(world, contacts[i], s)) == ContactClass::Resting) resting.push_back(&contacts[i]);
   stats.resting += static_cast<int>(resting.size());
   std::vector<std::vector<const Contact*>> islands = splitIntoIslands(world, resting);
   // Islands too large to pivot are solved at the velocity level, warm-started, when there is a
@@ -410,7 +412,7 @@ void addRestingForces(const World& world, const std::vector<Contact>& contacts, 
   for (std::size_t i = 0; i < islands.size(); ++i) at_velocity[i] = by_velocity && tooLargeToPivot(islands[i], s);
   std::vector<std::size_t> first_near(islands.size());
   for (std::size_t i = 0; i < islands.size(); ++i) first_near[i] = islands[i].size();
-  addNearContacts(world, contacts, s, step_s, at_velocity, islands);
+  addNearContacts(world, contacts, classes, step_s, at_velocity, islands);
   // Wrenches of one island depend only on that island's bodies, so the order is immaterial.
   for (std::size_t i = 0; i < islands.size(); ++i) {
     if (at_velocity[i])

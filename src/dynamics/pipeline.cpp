@@ -66,19 +66,21 @@ void Pipeline::step(World& world, const StepSettings& settings) {
   settleAtRest(world, settings);
 }
 
+void Pipeline::detectNow(World& world, const StepSettings& settings) {
+  if (settings.model == ContactModel::TimeStepping) {
+    bodyReach(world, body_radius_, settings.dt, reach_);
+    detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
+  } else {
+    detector_.detect(world, settings.contact, contacts_now_, &pairs_now_);
+  }
+}
+
 void Pipeline::wakeTouched(World& world, const StepSettings& settings) {
   if (sleep_.counters().asleep_now == 0) return;
   bool woke = false;
   timed(Sleep, [&] { woke = sleep_.wakeTouched(world, contacts_now_, detector_); });
   while (woke) {
-    timed(Detect, [&] {
-      if (settings.model == ContactModel::TimeStepping) {
-        bodyReach(world, body_radius_, settings.dt, reach_);   // the woken bodies can move now
-        detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
-      } else {
-        detector_.detect(world, settings.contact, contacts_now_, &pairs_now_);
-      }
-    });
+    timed(Detect, [&] { detectNow(world, settings); });   // the woken bodies can move now
     timed(Sleep, [&] { woke = sleep_.wakeTouched(world, contacts_now_, detector_); });
   }
 }
@@ -94,8 +96,7 @@ void Pipeline::settleAtRest(World& world, const StepSettings& settings) {
 
 double Pipeline::substep(World& world, const StepSettings& settings, double remaining) {
   ++counters_.substeps;
-  if (has_contacts_ && !contacts_fresh_)
-    timed(Detect, [&] { detector_.detect(world, settings.contact, contacts_now_, &pairs_now_); });
+  if (has_contacts_ && !contacts_fresh_) timed(Detect, [&] { detectNow(world, settings); });
   if (has_contacts_) wakeTouched(world, settings);
   if (has_contacts_) {
     bool hit = false;

@@ -79,6 +79,9 @@ class Pipeline {
   double watchedDepth(const World& world, const Watch& w, const StepSettings& settings);
   void correctPenetration(World& world, const StepSettings& settings);
   std::vector<std::string> describeStages() const;
+  // The world's contacts now into contacts_now_ / pairs_now_: within each body's reach for the
+  // time-stepping model (its speculative margin), within the margin for the Baraff model.
+  void detectNow(World& world, const StepSettings& settings);
   // Wakes sleeping islands that `contacts_now_` shows touched by awake bodies, and detects again
   // (with each body's reach for the time-stepping model) until none is: a solve never meets a
   // sleeper.
@@ -107,8 +110,8 @@ class Pipeline {
   std::vector<Watch> watched_;
   std::vector<Contact> landing_points_;
   std::vector<Wrench> wrenches_;
-  RestingMemory resting_memory_;
-  SleepKeeper sleep_;   // warm start of resting islands too large to pivot
+  RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
+  SleepKeeper sleep_;
   BodySnapshot snapshot_;
   double min_thickness_ = 0;
   std::vector<double> body_radius_;

@@ -15,10 +15,7 @@ void Pipeline::timeStep(World& world, const StepSettings& settings) {
   ++counters_.substeps;
   const double dt = settings.dt;
   if (has_contacts_) {
-    timed(Detect, [&] {
-      bodyReach(world, body_radius_, dt, reach_);
-      detector_.detect(world, settings.contact, contacts_now_, &pairs_now_, &reach_);
-    });
+    timed(Detect, [&] { detectNow(world, settings); });
     wakeTouched(world, settings);
     timed(Correct, [&] { projectContacts(world, settings); });
   }

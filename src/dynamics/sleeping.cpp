@@ -13,7 +13,8 @@ SleepKeeper::SleepKeeper(const World& world)
       inv_inertia_(world.bodies.size(), Eigen::Vector3d::Zero()),
       parent_(world.bodies.size()),
       supported_(world.bodies.size()),
-      restless_(world.bodies.size()) {}
+      restless_(world.bodies.size()),
+      id_of_root_(world.bodies.size()) {}
 
 int SleepKeeper::find(int body) {
   while (parent_[body] != body) body = parent_[body] = parent_[parent_[body]];
@@ -57,24 +58,24 @@ bool SleepKeeper::settle(World& world, const std::vector<Contact>& contacts, con
   // An island sleeps when every body in it has been quiet long enough and one of them rests on
   // something fixed: a body floating free at a crawl keeps its crawl (it is not at rest, it is
   // coasting), and a body that is slow only at the top of a bounce is not quiet for long.
-  std::vector<char> island_supported(n, 0);
+  // Per island, gathered at its root (a root's own flags are its own or already the island's).
   for (int b = 0; b < n; ++b) {
     if (world.bodies[b].is_static) continue;
     const int root = find(b);
     restless_[root] |= quiet_s_[b] < settings.after_s;
-    island_supported[root] |= supported_[b];
+    supported_[root] |= supported_[b];
   }
-  std::vector<int> id_of_root(n, -1);
+  std::fill(id_of_root_.begin(), id_of_root_.end(), -1);
   bool slept = false;
   for (int b = 0; b < n; ++b) {
     if (world.bodies[b].is_static) continue;
     const int root = find(b);
-    if (restless_[root] || !island_supported[root]) continue;
-    if (id_of_root[root] < 0) {
-      id_of_root[root] = next_island_++;
+    if (restless_[root] || !supported_[root]) continue;
+    if (id_of_root_[root] < 0) {
+      id_of_root_[root] = next_island_++;
       ++counters_.islands_slept;
     }
-    freeze(world, b, id_of_root[root], detector);
+    freeze(world, b, id_of_root_[root], detector);
     slept = true;
   }
   return slept;

@@ -64,7 +64,8 @@ class SleepKeeper {
   std::vector<double> inv_mass_;           // restored on waking
   std::vector<Eigen::Vector3d> inv_inertia_;
   std::vector<int> parent_;                // union-find over bodies (settle)
-  std::vector<char> supported_, restless_;
+  std::vector<char> supported_, restless_;   // per body, then per island at its root
+  std::vector<int> id_of_root_;               // sleeping island given to each root (settle)
   int next_island_ = 0;
   SleepCounters counters_;
 };
