@@ -5,23 +5,6 @@
 #include "collision/aabb.h"
 
 namespace tumble {
-namespace {
-
-// The thinnest width of a piece: the smallest extent of its vertices along a face normal.
-double thickness(const ConvexPiece& piece) {
-  double thinnest = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& n : piece.face_normals) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Eigen::Vector3d& v : piece.vertices) {
-      lo = std::min(lo, n.dot(v));
-      hi = std::max(hi, n.dot(v));
-    }
-    thinnest = std::min(thinnest, hi - lo);
-  }
-  return thinnest;
-}
-
-}  // namespace
 
 Eigen::Isometry3d poseOf(const RigidBody& body) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -40,7 +23,7 @@ ContactDetector::ContactDetector(const World& world) {
     }
     (body.is_static ? fixed : moving) += 1;
     for (const ConvexPiece& piece : body.pieces) {
-      pieces_.push_back({static_cast<int>(b), &piece, makeCollisionHull(piece), thickness(piece)});
+      pieces_.push_back({static_cast<int>(b), &piece, makeCollisionHull(piece), piece.thickness()});
       thinnest_ = std::min(thinnest_, pieces_.back().thickness);
       broad_.add({Aabb{}, static_cast<int>(b), body.is_static});
       near_broad_.add({Aabb{}, static_cast<int>(b), body.is_static});

@@ -10,20 +10,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The thinnest width of a piece: the smallest extent of its vertices along one of its face normals.
-double thickness(const ConvexPiece& piece) {
-  double thinnest = kInf;
-  for (const Eigen::Vector3d& n : piece.face_normals) {
-    double lo = kInf, hi = -kInf;
-    for (const Eigen::Vector3d& v : piece.vertices) {
-      lo = std::min(lo, n.dot(v));
-      hi = std::max(hi, n.dot(v));
-    }
-    thinnest = std::min(thinnest, hi - lo);
-  }
-  return thinnest;
-}
-
 double radius(const RigidBody& body) {
   double r = 0;
   for (const ConvexPiece& piece : body.pieces)
@@ -68,7 +54,7 @@ FaultCheck::FaultCheck(const World& world, FaultSettings settings)
     const RigidBody& b = world.bodies[i];
     start_x_.push_back(b.x);
     double thinnest = kInf;
-    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, thickness(piece));
+    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
     thinnest_.push_back(thinnest);
     start_energy_.push_back(b.is_static ? 0 : b.kineticEnergy());
     start_total_ += start_energy_.back();

@@ -1,6 +1,10 @@
 #include "dynamics/world_builder.h"
 
+#include <cstdio>
+
 #include "base/error.h"
+#include "dynamics/fault_check.h"
+#include "dynamics/start_overlap.h"
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_import.h"
 #include "geometry/primitives.h"
@@ -80,6 +84,31 @@ RigidBody buildBody(const Scene& scene, const BodySpec& spec, std::vector<std::s
   return body;
 }
 
+std::string metres(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g m", x);
+  return buffer;
+}
+
+// Bodies that start inside one another (start_overlap.h). The error points at the position of the
+// body that moves (of the later one when both do): the one the scene placed into the other.
+void reportStartOverlaps(const Scene& scene, BuiltWorld& built) {
+  const std::vector<RigidBody>& bodies = built.world.bodies;
+  for (const StartOverlap& o :
+       findStartOverlaps(built.world, scene.simulation.contact_tolerance_m, FaultSettings{}.depth_share)) {
+    int placed = bodies[o.b].is_static ? o.a : o.b, other = placed == o.b ? o.a : o.b;
+    std::string placed_name = "\"" + bodies[placed].name + "\"", other_name = "\"" + bodies[other].name + "\"";
+    if (o.tooDeep())
+      throw Error(ExitCode::BadInput,
+                  locate(scene, scene.bodies[placed].position_location) + "body " + placed_name +
+                      " starts inside body " + other_name + ": they overlap by " + metres(o.depth) +
+                      ", more than the " + metres(o.limit) +
+                      " (half the thinner piece) a step can push apart; move them apart");
+    built.warnings.push_back("bodies " + other_name + " and " + placed_name + " start overlapping by " +
+                             metres(o.depth) + "; the first step pushes them apart");
+  }
+}
+
 }  // namespace
 
 BuiltWorld buildWorld(const Scene& scene) {
@@ -96,6 +125,7 @@ BuiltWorld buildWorld(const Scene& scene) {
                     scene.simulation.sleep_after_s};
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
+  reportStartOverlaps(scene, out);
   return out;
 }
 

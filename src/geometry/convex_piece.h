@@ -18,6 +18,9 @@ struct ConvexPiece {
 
   // Moves every vertex by p -> R p + t (used to put pieces in the body's principal frame).
   void transform(const Eigen::Matrix3d& R, const Eigen::Vector3d& t);
+  // The thinnest width: the smallest extent of the vertices along a face normal (m). The most two
+  // pieces can overlap before one could pass through the other; O(faces x vertices).
+  double thickness() const;
 };
 
 }  // namespace tumble

@@ -62,6 +62,7 @@ void readMotionAndMass(ObjectReader& in, BodySpec& body) {
   if (body.shape == ShapeKind::Plane && !body.is_static)
     in.fail("static", "a plane is the static ground; it cannot move");
   body.position_m = in.vector3("position_m", body.position_m);
+  body.position_location = in.locationOf("position_m");   // for errors found once built (start_overlap.h)
   if (body.shape == ShapeKind::Plane) {
     if (in.has("quat_wxyz") || in.has("rotation_deg"))
       in.fail(in.has("quat_wxyz") ? "quat_wxyz" : "rotation_deg",

@@ -36,6 +36,7 @@ struct BodySpec {
   int sphere_subdivisions = 3;                         // icosphere level (3: 642 vertices)
   bool is_static = false;                              // planes are always static
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero(); // of the shape's origin (mesh file origin)
+  SourceLocation position_location;                    // where "position_m" was (or would be) written
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();          // of the centre of mass, world
   Eigen::Vector3d angular_velocity_rad_s = Eigen::Vector3d::Zero(); // world frame

@@ -87,3 +87,59 @@ TEST_CASE("initial velocities become momenta", "[dynamics]") {
   CHECK((b.velocity() - Eigen::Vector3d(1, 2, 3)).norm() < 1e-12);
   CHECK((b.angularVelocity() - Eigen::Vector3d(0.3, -0.2, 0.1)).norm() < 1e-12);
 }
+
+// Bodies that start inside one another (src/dynamics/start_overlap.h). The limit is the run-time
+// penetration limit, half the thinner piece: 0.5 m for unit boxes.
+TEST_CASE("a body placed deep inside another is refused at its position, naming both", "[dynamics]") {
+  Scene s = parseScene("{\"schema_version\": 1, \"bodies\": [\n"
+                       " {\"name\": \"ground\", \"shape\": \"plane\"},\n"
+                       " {\"name\": \"a\", \"shape\": \"box\", \"position_m\": [0, 0, 0.5]},\n"
+                       " {\"name\": \"b\", \"shape\": \"box\", \"position_m\": [0.1, 0.1, 0.6]}]}",
+                       "deep.json");
+  try {
+    buildWorld(s);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::StartsWith("deep.json:4:46: /bodies/2/position_m: body \"b\" starts inside "
+                                           "body \"a\": they overlap by 0.9 m, more than the 0.5 m"));
+  }
+}
+
+TEST_CASE("a body placed below the ground is refused at its own position, whatever the order", "[dynamics]") {
+  // The ground comes last, but the box is what the scene placed wrongly: the error points at it.
+  Scene s = parseScene("{\"schema_version\": 1, \"bodies\": [\n"
+                       " {\"name\": \"crate\", \"shape\": \"box\", \"position_m\": [0, 0, -2]},\n"
+                       " {\"name\": \"ground\", \"shape\": \"plane\"}]}",
+                       "sunk.json");
+  try {
+    buildWorld(s);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::StartsWith("sunk.json:2:50: /bodies/0/position_m: body \"crate\" starts inside "
+                                           "body \"ground\": they overlap by 2.5 m"));
+  }
+}
+
+TEST_CASE("a shallow overlap at the start is a warning; bodies that only touch get none", "[dynamics]") {
+  Scene sunk = parseScene(R"({"schema_version": 1, "bodies": [
+    {"name": "ground", "shape": "plane"},
+    {"name": "crate", "shape": "box", "position_m": [0, 0, 0.49]}]})", "shallow.json");
+  BuiltWorld built = buildWorld(sunk);
+  REQUIRE(built.warnings.size() == 1);
+  CHECK(built.warnings[0] == "bodies \"ground\" and \"crate\" start overlapping by 0.01 m; the first step pushes them apart");
+
+  // Resting exactly on the ground and on each other (a stack as scenes write it): no warning.
+  Scene stack = parseScene(R"({"schema_version": 1, "bodies": [
+    {"name": "ground", "shape": "plane"},
+    {"name": "a", "shape": "box", "position_m": [0, 0, 0.5]},
+    {"name": "b", "shape": "box", "position_m": [0.2, 0, 1.5]}]})", "stack.json");
+  CHECK(buildWorld(stack).warnings.empty());
+
+  // Two static bodies may overlap: nothing moves them, and nothing needs to.
+  Scene statics = parseScene(R"({"schema_version": 1, "bodies": [
+    {"name": "ground", "shape": "plane"},
+    {"name": "wall", "shape": "box", "static": true, "position_m": [0, 0, 0]}]})", "statics.json");
+  CHECK(buildWorld(statics).warnings.empty());
+}
