@@ -14,6 +14,7 @@
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "dynamics/world_builder.h"
+#include "io/atomic_file.h"
 #include "io/make_frame_sink.h"
 #include "io/output_path.h"
 #include "io/video_sink.h"
@@ -69,6 +70,7 @@ void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::ve
     throw Error(ExitCode::Usage, "--skip-existing works with PNG sequences; a video is one file (use -y to replace it)");
   if (o.skip_existing && o.overwrite) throw Error(ExitCode::Usage, "--skip-existing and --overwrite contradict each other");
   std::vector<std::filesystem::path> existing = existingOutputs(target, frames);
+  for (const std::filesystem::path& p : existing) checkReplaceable(p);   // a folder or device: never
   if (existing.empty() || o.overwrite) return;
   if (o.skip_existing) {
     std::erase_if(frames, [&](int f) { return std::filesystem::exists(framePath(target, f)); });

@@ -75,7 +75,7 @@ int run(const SimulateOptions& o) {
     std::fprintf(stderr, "tumble: simulated %.3f s (%ld steps of %.6g s, %zu bodies) in %.3f s (%.3g s per simulated s)%s%s\n",
                  simulated, steps, plan.step.dt, names.size(), wall,
                  simulated > 0 ? wall / simulated : 0.0, csv ? "; trajectory in " : "",
-                 csv ? o.trajectory.c_str() : "");
+                 !csv ? "" : o.trajectory == "-" ? "standard output" : o.trajectory.c_str());
   }
   if (o.scene.verbose) printPipelineStats(simulator.pipeline());
   return 0;
@@ -89,7 +89,7 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   addSceneOptions(*cmd, o->scene);
   addKeepGoingOption(*cmd, o->scene);
   cmd->add_option("--trajectory", o->trajectory,
-                  "CSV file: time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
+                  "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory file");
   return [o] { return run(*o); };

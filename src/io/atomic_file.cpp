@@ -27,6 +27,21 @@ fs::path temporarySibling(const fs::path& final_path, std::string_view tag, bool
   return final_path.parent_path() / name;
 }
 
+bool isStreamOutput(const fs::path& path) {
+  if (path == "-") return true;
+  std::error_code ec;
+  fs::file_status st = fs::status(path, ec);   // follows links: /dev/stdout -> /proc/self/fd/1
+  return !ec && (fs::is_character_file(st) || fs::is_fifo(st) || fs::is_socket(st));
+}
+
+void checkReplaceable(const fs::path& path) {
+  std::error_code ec;
+  fs::file_status st = fs::symlink_status(path, ec);
+  if (ec || !fs::exists(st) || fs::is_regular_file(st) || fs::is_symlink(st)) return;
+  const char* what = fs::is_directory(st) ? "a folder" : fs::is_fifo(st) ? "a pipe" : "a device or other special file";
+  throwCantWrite(path, std::string("it is ") + what + ", not a file; tumble replaces only files (choose another name)");
+}
+
 void throwCantWrite(const fs::path& path, std::string_view reason) {
   throw Error(ExitCode::CantCreate, "cannot write " + path.string() + ": " + std::string(reason));
 }
@@ -48,6 +63,13 @@ int renameNoReplace(const fs::path& from, const fs::path& to) {
 void commitFile(const fs::path& temp, const fs::path& final_path, bool overwrite) {
   int err = 0;
   if (overwrite) {
+    try {
+      checkReplaceable(final_path);   // a folder or device may have appeared since the start
+    } catch (const Error&) {
+      std::error_code ignored;
+      fs::remove(temp, ignored);
+      throw;
+    }
     err = std::rename(temp.c_str(), final_path.c_str()) == 0 ? 0 : errno;
   } else {
     err = renameNoReplace(temp, final_path);

@@ -39,22 +39,29 @@ void appendName(std::string& out, const std::string& name) {
 }  // namespace
 
 CsvTrajectoryWriter::CsvTrajectoryWriter(const fs::path& path, bool overwrite)
-    : path_(path), temp_(temporarySibling(path, "tmp")), overwrite_(overwrite) {
+    : path_(path), overwrite_(overwrite) {
+  buffer_ = kHeader;
+  buffer_ += '\n';
+  if (isStreamOutput(path_)) {
+    file_ = path_ == "-" ? stdout : std::fopen(path_.c_str(), "wb");
+    if (!file_) throwCantWrite(path_, std::strerror(errno));
+    return;
+  }
   std::error_code ec;
+  checkReplaceable(path_);
   if (!overwrite_ && fs::exists(path_, ec)) {
     throwCantWrite(path_, "it already exists (use -y/--overwrite to replace it)");
   }
+  temp_ = temporarySibling(path, "tmp");
   file_ = std::fopen(temp_.c_str(), "wb");
   if (!file_) throwCantWrite(path_, std::strerror(errno));
-  buffer_ = kHeader;
-  buffer_ += '\n';
 }
 
 CsvTrajectoryWriter::~CsvTrajectoryWriter() {
   if (!file_) return;
-  std::fclose(file_);
+  if (file_ != stdout) std::fclose(file_);
   std::error_code ignored;
-  fs::remove(temp_, ignored);
+  if (!temp_.empty()) fs::remove(temp_, ignored);
 }
 
 void CsvTrajectoryWriter::row(double time, const std::string& body, const double values[kValues]) {
@@ -81,13 +88,14 @@ void CsvTrajectoryWriter::close() {
   flush();
   std::FILE* file = file_;
   file_ = nullptr;
-  if (std::fclose(file) != 0) {
+  // A full device reports itself here, when the buffered bytes finally go out.
+  if ((file == stdout ? std::fflush(file) : std::fclose(file)) != 0) {
     int err = errno;
     std::error_code ignored;
-    fs::remove(temp_, ignored);
+    if (!temp_.empty()) fs::remove(temp_, ignored);
     throwCantWrite(path_, std::strerror(err));
   }
-  commitFile(temp_, path_, overwrite_);
+  if (!temp_.empty()) commitFile(temp_, path_, overwrite_);
 }
 
 }  // namespace tumble

@@ -18,7 +18,8 @@ class CsvTrajectoryWriter {
   static constexpr int kValues = 13;   // px py pz, qw qx qy qz, vx vy vz, wx wy wz
 
   // Opens a temporary file next to `path`; close() renames it onto `path`. Without `overwrite`
-  // an existing file is Error(CantCreate). Errors name `path`.
+  // an existing file is Error(CantCreate). A stream ("-" for standard output, a device, a pipe:
+  // isStreamOutput) is written in place instead. Errors name `path`.
   CsvTrajectoryWriter(const std::filesystem::path& path, bool overwrite);
   ~CsvTrajectoryWriter();   // without close(), removes the temporary file: no half a CSV
   CsvTrajectoryWriter(const CsvTrajectoryWriter&) = delete;
@@ -30,7 +31,7 @@ class CsvTrajectoryWriter {
  private:
   void flush();   // writes the buffer to the file
 
-  std::filesystem::path path_, temp_;
+  std::filesystem::path path_, temp_;   // temp_ is empty when writing a stream in place
   bool overwrite_;
   std::FILE* file_ = nullptr;
   std::string buffer_;

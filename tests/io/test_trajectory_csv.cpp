@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -73,6 +74,56 @@ TEST_CASE("trajectory CSV is written atomically and refuses to overwrite", "[io]
   again.row(1, "b", zeros);
   again.close();
   CHECK(readTrajectoryCsv(dir / "t.csv").size() == 1);
+}
+
+// A device or pipe is a stream: written in place. Renaming a finished temporary file onto its name,
+// as for files, replaced /dev/full with a regular file (root may write in /dev), and would replace
+// the /dev/stdout link.
+TEST_CASE("a trajectory to a device or a link to one is streamed in place, the device kept", "[io][csv]") {
+  test::TempDir dir;
+  const double zeros[13] = {};
+  fs::create_symlink("/dev/null", dir / "link.csv");   // as /dev/stdout links to /proc/self/fd/1
+  for (fs::path target : {fs::path("/dev/null"), dir / "link.csv"}) {
+    INFO(target);
+    CsvTrajectoryWriter writer(target, /*overwrite*/ false);   // a stream is not a file to keep
+    writer.row(0, "a", zeros);
+    writer.close();
+  }
+  CHECK(fs::is_character_file(fs::symlink_status("/dev/null")));
+  CHECK(fs::is_symlink(fs::symlink_status(dir / "link.csv")));
+  CHECK(fs::read_symlink(dir / "link.csv") == "/dev/null");
+  CHECK(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()) == 1);   // no temp left
+}
+
+TEST_CASE("a full device is a clear error naming it, and stays a device", "[io][csv]") {
+  if (!fs::is_character_file("/dev/full")) {
+    WARN("skipped: no /dev/full on this machine");
+    return;
+  }
+  const double zeros[13] = {};
+  CsvTrajectoryWriter writer("/dev/full", true);
+  writer.row(0, "a", zeros);
+  try {
+    writer.close();
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::CantCreate);
+    CHECK_THAT(e.what(), Catch::StartsWith("cannot write /dev/full: No space left on device"));
+  }
+  CHECK(fs::is_character_file(fs::symlink_status("/dev/full")));
+}
+
+TEST_CASE("an output name taken by a folder is refused before writing, even with overwrite", "[io][csv]") {
+  test::TempDir dir;
+  fs::create_directory(dir / "t.csv");
+  try {
+    CsvTrajectoryWriter writer(dir / "t.csv", true);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::CantCreate);
+    CHECK_THAT(e.what(), Catch::EndsWith("t.csv: it is a folder, not a file; tumble replaces only files (choose another name)"));
+  }
+  CHECK(fs::is_directory(dir / "t.csv"));
 }
 
 TEST_CASE("reading a malformed trajectory CSV names the line", "[io][csv]") {
