@@ -4,7 +4,7 @@
 // (fault_check.h: half the thinner body's thinnest piece) as a scene error: the first step would
 // otherwise stop on it as a numerical fault, with advice (a smaller dt) that cannot help, or push
 // the bodies apart along whichever axis is shortest, possibly the wrong way. A shallower overlap is
-// pushed apart by the first step's projection and only warned about.
+// pushed apart by the first steps' position projection (no velocity is added) and only warned about.
 #pragma once
 
 #include <vector>

@@ -105,7 +105,7 @@ void reportStartOverlaps(const Scene& scene, BuiltWorld& built) {
                       ", more than the " + metres(o.limit) +
                       " (half the thinner piece) a step can push apart; move them apart");
     built.warnings.push_back("bodies " + other_name + " and " + placed_name + " start overlapping by " +
-                             metres(o.depth) + "; the first step pushes them apart");
+                             metres(o.depth) + "; the first steps push them apart, without a push in velocity");
   }
 }
 
