@@ -122,7 +122,7 @@ TEST_CASE("a body placed below the ground is refused at its own position, whatev
                                                 "inside body \"ground\": they overlap by 2.5 m"));
 }
 
-TEST_CASE("a shallow overlap at the start is a warning; bodies that only touch get none", "[dynamics]") {
+TEST_CASE("a shallow overlap at the start is a warning, and bodies that only touch get none", "[dynamics]") {
   Scene sunk = parseScene(R"({"schema_version": 1, "bodies": [
     {"name": "ground", "shape": "plane"},
     {"name": "crate", "shape": "box", "position_m": [0, 0, 0.49]}]})", "shallow.json");
