@@ -1,0 +1,95 @@
+// Golden trajectory hashes: a handful of scenes simulated with each contact model, every body's
+// state (x, q, P, L) after every step hashed bit by bit and compared with the value committed
+// here. A refactor must leave every hash unchanged; a change meant to alter motion updates them,
+// after checking the accuracy tests, with
+//
+//   TUMBLE_PRINT_HASHES=1 build/tests/dynamics/test_trajectory_hash
+//
+// which prints the table below with the new values (and fails while they differ). The values hold for this project's build
+// (x86-64, GCC, -ffp-contract=off, no -ffast-math): another compiler or architecture may round
+// differently and need its own table.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "dynamics/simulator.h"
+#include "dynamics/world_builder.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
+
+using namespace tumble;
+
+namespace {
+
+// FNV-1a over the bytes of every double.
+struct TrajectoryHash {
+  std::uint64_t value = 1469598103934665603ull;
+  void add(double x) {
+    unsigned char bytes[sizeof x];
+    std::memcpy(bytes, &x, sizeof x);
+    for (unsigned char b : bytes) value = (value ^ b) * 1099511628211ull;
+  }
+  void add(const World& world) {
+    add(world.time);
+    for (const RigidBody& b : world.bodies) {
+      for (int i = 0; i < 3; ++i) add(b.x[i]);
+      add(b.q.w()), add(b.q.x()), add(b.q.y()), add(b.q.z());
+      for (int i = 0; i < 3; ++i) add(b.P[i]);
+      for (int i = 0; i < 3; ++i) add(b.L[i]);
+    }
+  }
+};
+
+struct GoldenRun {
+  const char* scene;      // under scenes/
+  const char* model;      // "baraff", "time_stepping" or "" for the scene's own
+  double seconds;
+  std::uint64_t hash;
+};
+
+// Sleeping stays as each scene sets it (on by default): falling asleep is part of the motion.
+const GoldenRun kRuns[] = {
+    {"cube_drop", "", 2.0, 0x650fb64ad07d6353ull},
+    {"knockdown", "", 1.0, 0x36d346b2896ff9c2ull},
+    {"pile", "baraff", 1.0, 0x52385ee462029f9dull},
+    {"pile", "time_stepping", 1.0, 0x8f2f2dd9160dc93aull},
+    {"hard/cradle", "", 0.3, 0x4d791511f9dca098ull},
+    {"knockdown", "time_stepping", 1.0, 0xf4c84c296b6643bfull},
+    {"stack10", "", 1.0, 0xe213a8707b0e10cfull},
+    {"incline_slide", "", 1.0, 0x969031daf03cf88bull},
+    {"hard/tunnel_shot", "", 0.2, 0x44f1efbeb4add1baull},
+    {"free_spin", "", 2.0, 0x1cbeced242122622ull},
+};
+
+std::uint64_t simulateAndHash(const GoldenRun& run) {
+  Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + run.scene + ".json");
+  if (std::string(run.model) == "baraff") scene.simulation.contact_model = ContactModel::Baraff;
+  if (std::string(run.model) == "time_stepping") scene.simulation.contact_model = ContactModel::TimeStepping;
+  setDuration(scene, run.seconds);
+  BuiltWorld built = buildWorld(scene);
+  Simulator sim(std::move(built.world), {built.step, scene.simulation.steps_per_frame, scene.render.frames});
+  TrajectoryHash hash;
+  hash.add(sim.world());
+  sim.run({}, [&](const World& w) { hash.add(w); });
+  return hash.value;
+}
+
+}  // namespace
+
+TEST_CASE("trajectory hashes: every step of the golden runs is bit-identical to the committed values",
+          "[determinism][golden]") {
+  const bool print = std::getenv("TUMBLE_PRINT_HASHES") != nullptr;
+  for (const GoldenRun& run : kRuns) {
+    const std::uint64_t got = simulateAndHash(run);
+    if (print)
+      std::printf("    {\"%s\", \"%s\", %.1f, 0x%016llxull},\n", run.scene, run.model, run.seconds,
+                  static_cast<unsigned long long>(got));
+    INFO(run.scene << " (" << (*run.model ? run.model : "scene's model") << ", " << run.seconds << " s): got 0x"
+                   << std::hex << got << ", committed 0x" << run.hash);
+    CHECK(got == run.hash);
+  }
+}
