@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <string>
 
 #include "app/commands.h"
 #include "app/interrupt.h"
+#include "base/build_info.h"
 #include "base/error.h"
 
 namespace {
@@ -29,7 +31,8 @@ int main(int argc, char** argv) {
   CLI::App app{"tumble - offline rigid-body animation: a scene file in, frames or a video out", "tumble"};
   app.footer(kExitCodes);
   app.require_subcommand(1);
-  app.set_version_flag("--version", "tumble 0.1.0");
+  app.set_version_flag("--version", std::string("tumble ") + tumble::buildVersion() + " (commit " +
+                                        tumble::buildCommit() + ")");
   std::map<std::string, std::function<int()>> commands = {
       {"render", tumble::addRenderCommand(app)},
       {"simulate", tumble::addSimulateCommand(app)},
