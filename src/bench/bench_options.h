@@ -16,7 +16,7 @@ struct BenchOptions {
   std::vector<std::string> scenes;                 // ids; empty = all (quick: all but the big piles)
   std::vector<std::string> settings;               // names; empty = every available default
   std::vector<double> hz{60, 120, 240, 480, 1000}; // steps per second to sweep
-  double pile_duration_s = 5;                      // s: SCENES.md's 5 s unless shortened
+  double pile_duration_s = 5;                      // s: docs/bench/scenes.md's 5 s unless shortened
   std::filesystem::path out_dir = "out/bench";
   RunOptions run;
 };

@@ -1,4 +1,4 @@
-// The benchmark scenes of shared/bench/SCENES.md as plain, engine-neutral data: every body is a
+// The benchmark scenes of docs/bench/scenes.md as plain, engine-neutral data: every body is a
 // box, the ground is the half-space z <= 0, one friction and one restitution hold for every pair.
 // Each engine driver turns a BenchScene into its own world; the metrics read back box poses only,
 // so every engine is measured by the same code.
@@ -20,7 +20,7 @@ struct BoxBody {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();                     // rad/s, world
 };
 
-// Which metric set applies (SCENES.md section).
+// Which metric set applies (docs/bench/scenes.md section).
 enum class SceneKind { CubeDrop, InclineSlide, InclineStick, Rest, Stack, FreeSpin, Pile, MassRatio,
                        Tunnel };
 
@@ -42,10 +42,10 @@ struct BenchScene {
 // S6_1000 S7 S8 S8ccd.
 std::vector<std::string> allSceneIds();
 // Throws std::invalid_argument for an unknown id. `dts` is used unless the scene fixes its own
-// (the piles run at 1/240 s only, as SCENES.md says).
+// (the piles run at 1/240 s only, as docs/bench/scenes.md says).
 BenchScene makeScene(const std::string& id, const std::vector<double>& dts);
-// S6: N cubes of 0.5 m dropped in layers into the walled bin (SCENES.md gives every coordinate
-// and the random orientations: std::mt19937(12345), four N(0,1) draws per cube, w x y z).
+// S6: N cubes of 0.5 m dropped in layers into the walled bin (docs/bench/scenes.md gives every
+// coordinate and the random orientations: std::mt19937(12345), four N(0,1) draws per cube, w x y z).
 BenchScene makePile(int n);
 
 }  // namespace tumble::bench

@@ -1,5 +1,5 @@
-// Penetration measured geometrically from poses, as SCENES.md defines it, so every engine is judged
-// by the same ruler and never by its own contact reports.
+// Penetration measured geometrically from poses, as docs/bench/scenes.md defines it, so every
+// engine is judged by the same ruler and never by its own contact reports.
 #pragma once
 
 #include <Eigen/Core>

@@ -62,4 +62,11 @@ std::vector<EngineSetting> bulletSettings();
 std::vector<EngineSetting> odeSettings();
 std::vector<EngineSetting> mujocoSettings();
 
+// Every engine in this build with its version, tumble first: "tumble 0.1.0", "Bullet 3.24", ...
+std::vector<std::string> engineVersions();
+// Per peer, from its own file: the version of the library actually linked where it says so.
+std::string bulletVersion();
+std::string odeVersion();
+std::string mujocoVersion();
+
 }  // namespace tumble::bench

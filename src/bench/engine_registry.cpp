@@ -1,5 +1,6 @@
 // The list of engines compiled in. Peers are optional: CMake defines TUMBLE_BENCH_WITH_<PEER>
 // when it found the peer's Debian package and built its driver library.
+#include "base/build_info.h"
 #include "bench/engine.h"
 
 namespace tumble::bench {
@@ -19,6 +20,20 @@ std::vector<EngineSetting> availableSettings() {
   append(mujocoSettings());
 #endif
   (void)append;
+  return all;
+}
+
+std::vector<std::string> engineVersions() {
+  std::vector<std::string> all{std::string("tumble ") + buildVersion()};
+#if TUMBLE_BENCH_WITH_BULLET
+  all.push_back("Bullet " + bulletVersion());
+#endif
+#if TUMBLE_BENCH_WITH_ODE
+  all.push_back("ODE " + odeVersion());
+#endif
+#if TUMBLE_BENCH_WITH_MUJOCO
+  all.push_back("MuJoCo " + mujocoVersion());
+#endif
   return all;
 }
 

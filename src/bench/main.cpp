@@ -1,7 +1,8 @@
-// tumble-bench: speed against error on the benchmark scenes of shared/bench/SCENES.md, tumble and
+// tumble-bench: speed against error on the benchmark scenes of docs/bench/scenes.md, tumble and
 // the peers found at build time side by side in one run. See the README, "Speed against error".
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "bench/bench_options.h"
 #include "bench/job_process.h"
 #include "bench/report.h"
+#include "bench/results_page.h"
 
 namespace tb = tumble::bench;
 
@@ -50,26 +52,19 @@ tb::SceneResults runScene(const tb::BenchScene& scene, const std::vector<tb::Eng
 // What did not run in full, in one place at the end of the report.
 void printCuts(std::ostream& out, const std::vector<tb::SceneResults>& all) {
   out << "\nCut, skipped or failed:\n";
-  int n = 0;
-  for (const tb::SceneResults& s : all) {
-    for (const tb::RunResult& r : s.rows)
-      if (r.cut || r.failed) {
-        out << "  " << r.scene << " " << r.setting << " 1/" << std::lround(1 / r.dt) << ": " << r.note << "\n";
-        ++n;
-      }
-    for (const std::string& k : s.skipped) {
-      out << "  " << s.scene.id << " " << k << "\n";
-      ++n;
-    }
-  }
-  if (n == 0) out << "  nothing\n";
+  const std::vector<std::string> lines = tb::cutLines(all);
+  for (const std::string& l : lines) out << "  " << l << "\n";
+  if (lines.empty()) out << "  nothing\n";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  const auto started = std::chrono::steady_clock::now();
+  const tb::RunStamp stamp_args = tb::stampThisRun({argv + 1, argv + argc});
   tb::BenchOptions o;
   bool list = false;
+  std::filesystem::path docs_dir;
   CLI::App app{"tumble-bench: wall time per simulated second against error, tumble and its peers"};
   app.add_flag("--quick", o.quick, "smoke test: dt 1/60 and 1/240, short durations, one run per point");
   app.add_option("--scenes", o.scenes, "scene ids (S1 S2a S2b S3 S4 S5 S6_100 S6_300 S6_1000 S7 S8 S8ccd)")->delimiter(',');
@@ -77,12 +72,16 @@ int main(int argc, char** argv) {
   app.add_option("--hz", o.hz, "steps per second to sweep (default 60,120,240,480,1000)")->delimiter(',');
   app.add_option("--reps", o.run.reps, "fresh runs per point; the median time is reported")->check(CLI::Range(1, 100));
   app.add_option("--cap", o.run.cap_s, "wall s of stepping after which a run stops early (reported as cut)")->check(CLI::PositiveNumber);
-  app.add_option("--pile-duration", o.pile_duration_s, "simulated s of the piles (SCENES.md: 5)")->check(CLI::PositiveNumber);
+  app.add_option("--pile-duration", o.pile_duration_s, "simulated s of the piles (docs/bench/scenes.md: 5)")->check(CLI::PositiveNumber);
   app.add_option("--sc-horizon", o.run.sc_horizon_s, "horizon (s) of the piles' self-consistency error")->check(CLI::PositiveNumber);
-  app.add_option("-o,--out", o.out_dir, "folder for results.csv and the plots");
+  CLI::Option* out = app.add_option("-o,--out", o.out_dir, "folder for results.csv and the plots");
+  app.add_option("--docs", docs_dir, "also write results.md (the tables, stamped with date, commit, "
+                 "machine and engine versions) and put the CSV and plots beside it, e.g. docs/bench")
+      ->excludes(out);
   app.add_flag("--list", list, "list the engine settings in this build and exit");
   CLI11_PARSE(app, argc, argv);
   if (o.quick) tb::applyQuick(o);
+  if (!docs_dir.empty()) o.out_dir = docs_dir;
 
   const std::vector<tb::EngineSetting> settings = tb::availableSettings();
   if (list) {
@@ -91,17 +90,26 @@ int main(int argc, char** argv) {
   }
   try {
     std::filesystem::create_directories(o.out_dir);
+    tb::RunStamp stamp = stamp_args;
+    stamp.engines = tb::engineVersions();
+    const std::vector<tb::BenchScene> planned = tb::plannedScenes(o);
     std::vector<tb::SceneResults> all;
-    for (const tb::BenchScene& scene : tb::plannedScenes(o)) {
+    for (const tb::BenchScene& scene : planned) {
       all.push_back(runScene(scene, settings, o));
       tb::printTable(std::cout, all.back());
       std::cout.flush();
       tb::writePlot(o.out_dir / (scene.id + ".png"), all.back());
-      tb::writeCsv(o.out_dir / "results.csv", all);   // rewritten after each scene: partial runs keep data
+      // Rewritten after each scene: a partial run keeps its data, and the page says it is partial.
+      tb::writeCsv(o.out_dir / "results.csv", all);
+      if (!docs_dir.empty()) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        tb::writeResultsPage(docs_dir / "results.md", stamp, {planned.size(), elapsed}, all);
+      }
     }
     printCuts(std::cout, all);
     std::cout << "\nwrote " << (o.out_dir / "results.csv").string() << " and a plot per scene in "
               << o.out_dir.string() << "/\n";
+    if (!docs_dir.empty()) std::cout << "wrote " << (docs_dir / "results.md").string() << "\n";
   } catch (const std::exception& e) {
     std::cerr << "tumble-bench: " << e.what() << "\n";
     return 64;

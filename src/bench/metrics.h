@@ -1,5 +1,5 @@
-// The metrics of SCENES.md, computed from the box states an engine reports after every step.
-// One collector per scene kind; all engines go through the same code.
+// The metrics of docs/bench/scenes.md, computed from the box states an engine reports after every
+// step. One collector per scene kind; all engines go through the same code.
 #pragma once
 
 #include <memory>

@@ -1,5 +1,5 @@
 // Collectors of the small contact scenes: S1 cube drop, S2 incline, S3 rest, S4 stack, S7 mass
-// ratio, S8 tunnelling (definitions: shared/bench/SCENES.md).
+// ratio, S8 tunnelling (definitions: docs/bench/scenes.md).
 #include <algorithm>
 #include <cmath>
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "bench/metrics.h"
@@ -12,14 +13,6 @@
 
 namespace tumble::bench {
 namespace {
-
-std::string fmt(double x) {
-  char buf[32];
-  if (std::isnan(x)) return "-";
-  if (x == std::round(x) && std::abs(x) < 1e6) std::snprintf(buf, sizeof buf, "%.0f", x);
-  else std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
 
 std::string hz(double dt) { return std::to_string(std::lround(1 / dt)); }
 
@@ -34,25 +27,66 @@ std::string pad(const std::string& s, std::size_t w) { return s.size() >= w ? s 
 
 }  // namespace
 
-void printTable(std::ostream& out, const SceneResults& s) {
+std::string formatFigure(double x) {
+  char buf[32];
+  if (std::isnan(x)) return "-";
+  if (x == std::round(x) && std::abs(x) < 1e6) std::snprintf(buf, sizeof buf, "%.0f", x);
+  else std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+SceneTable sceneTable(const SceneResults& s) {
   const bool pile = s.scene.kind == SceneKind::Pile;
-  out << "\n" << s.scene.id << " " << s.scene.title << " (" << s.scene.duration << " s; headline error "
-      << headlineMetric(s.scene.kind) << ")\n";
+  SceneTable t;
+  std::ostringstream caption;
+  caption << s.scene.id << " " << s.scene.title << " (" << s.scene.duration << " s; headline error "
+          << headlineMetric(s.scene.kind) << ")";
+  t.caption = caption.str();
   std::vector<std::string> names;
   for (const RunResult& r : s.rows)
     for (const Metric& m : r.metrics)
       if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
-  std::string head = pad("setting", 20) + pad("Hz", 6) + pad("wall/sim", 10) + pad("reps", 5);
-  if (pile) head += pad("MB", 6);
-  for (const std::string& n : names) head += pad(n, std::max<std::size_t>(10, n.size() + 1));
-  out << head << "note\n";
-  for (const RunResult& r : s.rows) {
-    std::string line = pad(r.setting, 20) + pad(hz(r.dt), 6) + pad(fmt(r.wall_per_sim), 10) + pad(std::to_string(r.reps), 5);
-    if (pile) line += pad(fmt(r.peak_rss_mb), 6);
-    for (const std::string& n : names) line += pad(fmt(metricValue(r, n)), std::max<std::size_t>(10, n.size() + 1));
-    out << line << r.note << "\n";
+  t.head = {"setting", "Hz", "wall/sim", "reps"};
+  t.widths = {20, 6, 10, 5};
+  if (pile) {
+    t.head.push_back("MB");
+    t.widths.push_back(6);
   }
+  for (const std::string& n : names) {
+    t.head.push_back(n);
+    t.widths.push_back(std::max<std::size_t>(10, n.size() + 1));
+  }
+  t.head.push_back("note");
+  for (const RunResult& r : s.rows) {
+    std::vector<std::string> row = {r.setting, hz(r.dt), formatFigure(r.wall_per_sim), std::to_string(r.reps)};
+    if (pile) row.push_back(formatFigure(r.peak_rss_mb));
+    for (const std::string& n : names) row.push_back(formatFigure(metricValue(r, n)));
+    row.push_back(r.note);
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+void printTable(std::ostream& out, const SceneResults& s) {
+  const SceneTable t = sceneTable(s);
+  out << "\n" << t.caption << "\n";
+  auto line = [&](const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < t.widths.size(); ++i) out << pad(cells[i], t.widths[i]);
+    out << cells.back() << "\n";
+  };
+  line(t.head);
+  for (const std::vector<std::string>& row : t.rows) line(row);
   for (const std::string& k : s.skipped) out << "  skipped " << k << "\n";
+}
+
+std::vector<std::string> cutLines(const std::vector<SceneResults>& all) {
+  std::vector<std::string> out;
+  for (const SceneResults& s : all) {
+    for (const RunResult& r : s.rows)
+      if (r.cut || r.failed) out.push_back(r.scene + " " + r.setting + " 1/" + hz(r.dt) + ": " + r.note);
+    for (const std::string& k : s.skipped) out.push_back(s.scene.id + " " + k);
+  }
+  return out;
 }
 
 void writeCsv(const std::filesystem::path& file, const std::vector<SceneResults>& all) {

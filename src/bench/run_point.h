@@ -14,7 +14,7 @@ namespace tumble::bench {
 
 struct RunOptions {
   int reps = 3;                     // fresh runs per point; the median time is reported
-  double single_run_above_s = 60;   // s: one run only when a run's stepping takes longer (SCENES.md)
+  double single_run_above_s = 60;   // s: one run only when a run's stepping takes longer (scenes.md)
   double cap_s = 60;                // s: wall time of stepping after which a run stops early ("cut")
   double sc_horizon_s = 1.0;        // s: horizon of the self-consistency error (piles)
   int sc_ratio = 4;                 // the reference runs at dt / sc_ratio

@@ -1,5 +1,6 @@
 // The whole benchmark in --quick mode, as the README runs it: checks that it finishes, writes its
-// CSV and a plot per scene, and that every metric of every engine is finite. Never a timing.
+// CSV, a plot per scene and the results page, and that every metric of every engine is finite.
+// Never a timing.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -25,14 +26,25 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int runBench(const std::string& args, const std::string& log) {
+  const std::string cmd = std::string(TUMBLE_BENCH_EXE) + " " + args + " > " +
+                          (fs::path(TUMBLE_BINARY_DIR) / log).string() + " 2>&1";
+  return std::system(cmd.c_str());
+}
+
 }  // namespace
 
-TEST_CASE("tumble-bench --quick writes a CSV of finite metrics and a plot per scene") {
+TEST_CASE("tumble-bench --quick --docs writes a CSV of finite metrics, a plot per scene and the page") {
   const fs::path out = fs::path(TUMBLE_BINARY_DIR) / "bench-quick";
   fs::remove_all(out);
-  const std::string cmd = std::string(TUMBLE_BENCH_EXE) + " --quick -o " + out.string() + " > " +
-                          (fs::path(TUMBLE_BINARY_DIR) / "bench-quick.log").string() + " 2>&1";
-  REQUIRE(std::system(cmd.c_str()) == 0);
+  REQUIRE(runBench("--quick --docs " + out.string(), "bench-quick.log") == 0);
   std::ifstream csv(out / "results.csv");
   REQUIRE(csv);
   std::string line;
@@ -56,4 +68,33 @@ TEST_CASE("tumble-bench --quick writes a CSV of finite metrics and a plot per sc
   CHECK(engines.count("tumble") == 1);
   CHECK(scenes.size() == 10);
   for (const std::string& s : scenes) CHECK(fs::file_size(out / (s + ".png")) > 1000);
+
+  // The page: stamped, complete, and a table under the plot of every scene that ran.
+  const std::string page = readAll(out / "results.md");
+  CHECK(page.find("| command | `tumble-bench --quick --docs ") != std::string::npos);
+  for (const char* field : {"| date | 2", "| commit | ", "| build type | ", "| machine | ", "| engines | tumble "})
+    CHECK(page.find(field) != std::string::npos);
+  CHECK(page.find("partial") == std::string::npos);
+  CHECK(page.find("| command | `tumble-bench --quick --docs ") < page.find("## Headline error and cost"));
+  for (const std::string& s : scenes) {
+    INFO(s);
+    const std::size_t at = page.find("\n### " + s + " ");
+    REQUIRE(at != std::string::npos);
+    const std::size_t table = page.find("\n| setting | Hz | wall/sim | reps |", at);
+    CHECK(table != std::string::npos);
+    CHECK(table < page.find("\n### ", at + 1));
+    CHECK(page.find("](" + s + ".png)", at) < table);
+  }
+  CHECK(page.find("## Piles") != std::string::npos);
+}
+
+TEST_CASE("tumble-bench -o writes the CSV and plots but no page") {
+  const fs::path out = fs::path(TUMBLE_BINARY_DIR) / "bench-o";
+  fs::remove_all(out);
+  REQUIRE(runBench("--scenes S1 --settings tumble-rk4 --hz 60 --reps 1 -o " + out.string(), "bench-o.log") == 0);
+  CHECK(fs::exists(out / "results.csv"));
+  CHECK(fs::exists(out / "S1.png"));
+  CHECK(!fs::exists(out / "results.md"));
+  // The two are one choice: where everything goes.
+  CHECK(runBench("--quick --docs " + out.string() + " -o " + out.string(), "bench-o-docs.log") != 0);
 }

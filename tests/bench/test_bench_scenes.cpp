@@ -6,7 +6,7 @@
 
 using namespace tumble::bench;
 
-TEST_CASE("piles are laid out as SCENES.md says") {
+TEST_CASE("piles are laid out as docs/bench/scenes.md says") {
   const BenchScene p100 = makePile(100);
   REQUIRE(p100.bodies.size() == 100);
   REQUIRE(p100.walls.size() == 4);

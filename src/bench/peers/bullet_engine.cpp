@@ -1,4 +1,4 @@
-// Bullet 3.24 (double precision) as results-peers.md sets it up "as a user would":
+// Bullet 3.24 (double precision) as docs/bench/peers.md sets it up "as a user would":
 // btDiscreteDynamicsWorld with the sequential-impulse solver, Dbvt broad phase, default collision
 // configuration and every solver default. Bullet multiplies the coefficients of the two bodies, so
 // each body gets sqrt(mu) and sqrt(e). One stepSimulation(dt, 0) is exactly one step of dt.
@@ -32,7 +32,7 @@ class BulletEngine : public Engine {
       body->setAngularVelocity(btVector3(b.w.x(), b.w.y(), b.w.z()));
       if (!opt.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
       if (scene.ccd) {
-        // results-peers.md: motion threshold = smallest half-extent, swept sphere 0.8 of it.
+        // docs/bench/peers.md: motion threshold = smallest half-extent, swept sphere 0.8 of it.
         const double h = b.half_extents.minCoeff();
         body->setCcdMotionThreshold(h);
         body->setCcdSweptSphereRadius(0.8 * h);
@@ -104,7 +104,7 @@ EngineSetting bulletSetting(const std::string& name, BulletOptions opt) {
   EngineSetting s = settingOf<BulletEngine>(name, "bullet", opt);
   if (!opt.sleeping)
     s.skip_reason = [](const BenchScene& scene) {
-      // Sleeping matters only where bodies come to rest (results-peers.md runs it there).
+      // Sleeping matters only where bodies come to rest (docs/bench/peers.md runs it there).
       const bool rests = scene.kind == SceneKind::Rest || scene.kind == SceneKind::Stack ||
                          scene.kind == SceneKind::MassRatio || scene.kind == SceneKind::Pile;
       return rests ? std::string() : std::string("nothing comes to rest: same as bullet");
@@ -113,6 +113,12 @@ EngineSetting bulletSetting(const std::string& name, BulletOptions opt) {
 }
 
 }  // namespace
+
+// The version of the headers built against (Bullet has no run-time call): 324 for 3.24.
+std::string bulletVersion() {
+  const int v = btGetVersion();
+  return std::to_string(v / 100) + "." + std::to_string(v % 100);
+}
 
 std::vector<EngineSetting> bulletSettings() {
   return {bulletSetting("bullet", {true}), bulletSetting("bullet-nosleep", {false})};

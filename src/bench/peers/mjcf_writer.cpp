@@ -30,7 +30,7 @@ double dampingRatioFor(double e) {
 
 std::string mjcfOf(const BenchScene& scene, double dt, const MujocoOptions& opt) {
   const std::size_t n = scene.bodies.size();
-  // 2.2.2 sizes its buffers from these by hand (results-peers.md: 12 N + 40 contacts, 4 rows each).
+  // 2.2.2 sizes its buffers from these by hand (docs/bench/peers.md: 12 N + 40 contacts, 4 rows each).
   // Its mjData is one buffer whose size must fit an int (2.1 GB), and it grows with njmax^2 (dense
   // constraint matrices) and njmax nv (Jacobians): 4 (12 N + 40) rows no longer fit above ~220
   // boxes ("could not create mjData"). Measured here: 11000 rows fit at N = 300 and 11697 do not;

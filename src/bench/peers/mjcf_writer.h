@@ -1,4 +1,4 @@
-// The MJCF model of a BenchScene for MuJoCo 2.2.2, with the settings of results-peers.md.
+// The MJCF model of a BenchScene for MuJoCo 2.2.2, with the settings of docs/bench/peers.md.
 #pragma once
 
 #include <string>

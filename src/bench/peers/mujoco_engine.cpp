@@ -1,4 +1,4 @@
-// MuJoCo 2.2.2 as results-peers.md sets it up: MJCF generated per scene (mjcf_writer.cpp), the
+// MuJoCo 2.2.2 as docs/bench/peers.md sets it up: MJCF generated per scene (mjcf_writer.cpp), the
 // defaults otherwise (semi-implicit Euler, Newton solver with 100 iterations and tol 1e-8,
 // pyramidal cones), restitution emulated by an under-damped contact. mujoco-cg is the CG solver
 // the peers used for the piles.
@@ -86,13 +86,16 @@ EngineSetting mujocoSetting(const std::string& name, MujocoOptions opt) {
     if (scene.ccd) return std::string("MuJoCo has no continuous collision detection");
     if (opt.cg && scene.kind != SceneKind::Pile) return std::string("CG is the piles' setting");
     if (!opt.cg && scene.kind == SceneKind::Pile && scene.bodies.size() >= 1000)
-      return std::string("2.2.2 Newton: dense 6000 x 6000 Hessian and a contact buffer too small (results-peers.md)");
+      return std::string("2.2.2 Newton: dense 6000 x 6000 Hessian and a contact buffer too small (peers.md)");
     return std::string();
   };
   return s;
 }
 
 }  // namespace
+
+// The library's own version string ("2.2.2"), not the header's.
+std::string mujocoVersion() { return mj_versionString(); }
 
 std::vector<EngineSetting> mujocoSettings() {
   return {mujocoSetting("mujoco", {false}), mujocoSetting("mujoco-cg", {true})};

@@ -1,4 +1,4 @@
-// ODE 0.16 (double precision) as results-peers.md sets it up: world ERP 0.2 and CFM 1e-5 (the
+// ODE 0.16 (double precision) as docs/bench/peers.md sets it up: world ERP 0.2 and CFM 1e-5 (the
 // defaults), a hash space, up to 8 contacts per geom pair from dCollide, dContactApprox1 so that
 // mu is a coefficient (not a force limit in newtons), dContactBounce with bounce_vel 0.1 m/s when
 // e > 0. ode-step = dWorldStep (Dantzig LCP), ode-quick = dWorldQuickStep (20 SOR iterations,
@@ -132,7 +132,7 @@ EngineSetting odeSetting(const std::string& name, bool quick) {
   EngineSetting s = settingOf<OdeEngine>(name, "ode", quick);
   s.skip_reason = [quick](const BenchScene& scene) {
     if (scene.ccd) return std::string("ODE has no continuous collision detection");
-    // As in results-peers.md: the dense Dantzig LCP took 14 s per simulated s at N = 100.
+    // As in docs/bench/peers.md: the dense Dantzig LCP took 14 s per simulated s at N = 100.
     if (!quick && scene.kind == SceneKind::Pile && scene.bodies.size() >= 300)
       return std::string("dWorldStep (dense Dantzig LCP) far too slow at N >= 300");
     return std::string();
@@ -141,6 +141,9 @@ EngineSetting odeSetting(const std::string& name, bool quick) {
 }
 
 }  // namespace
+
+// ODE has no version call; pkg-config's version of the package it was built against.
+std::string odeVersion() { return TUMBLE_BENCH_ODE_VERSION; }
 
 std::vector<EngineSetting> odeSettings() {
   return {odeSetting("ode-quick", true), odeSetting("ode-step", false)};
