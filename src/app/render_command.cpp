@@ -222,7 +222,10 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("--samples", o->samples, "MSAA samples: 1, 2 or 4");
   cmd->add_option("--shadow-map-size", o->shadow_map_size, "Shadow map texels per side")
       ->check(CLI::Range(256, 8192));
-  cmd->add_option("--shaders", o->shaders, "Folder of the GLSL shaders (default: the source tree's shaders/)");
+  cmd->add_option("--shaders", o->shaders,
+                  "Read the GLSL from this folder (e.g. the source tree's shaders/) instead of the copy "
+                  "built into tumble, to try shader edits without rebuilding")
+      ->envname("TUMBLE_SHADER_DIR");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--skip-existing", o->skip_existing, "Keep PNG frames that already exist (resume)");
   cmd->add_option("--check-against", o->check_against,

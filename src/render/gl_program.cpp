@@ -1,58 +1,42 @@
 #include "render/gl_program.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "base/error.h"
 
 namespace tumble::render {
 
 namespace {
 
-std::string readShaderFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw Error(ExitCode::MissingInput,
-                "cannot read shader " + path.string() +
-                    " (set the shader folder with --shaders or TUMBLE_SHADER_DIR)");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Splits "#version ...\n<rest>" so libraries can go between the two. #line directives keep the
 // compiler's line numbers true to each file: string number 0 is the main file, 1.. the libraries.
-std::vector<std::string> assembleStage(const std::filesystem::path& dir,
-                                       const ShaderStageFiles& files, const std::string& defines) {
-  const std::filesystem::path main_path = dir / files.main;
-  std::string main = readShaderFile(main_path);
+std::vector<std::string> assembleStage(const ShaderSource& source, const ShaderStageFiles& files,
+                                       const std::string& defines) {
+  std::string main = source.read(files.main);
   const auto eol = main.find('\n');
   if (main.rfind("#version", 0) != 0 || eol == std::string::npos) {
     throw Error(ExitCode::BadInput,
-                main_path.string() + ": the first line must be a #version directive");
+                source.describe(files.main) + ": the first line must be a #version directive");
   }
   std::vector<std::string> parts{main.substr(0, eol + 1), defines};
   for (std::size_t i = 0; i < files.libraries.size(); ++i) {
     parts.push_back("#line 1 " + std::to_string(i + 1) + "\n");
-    parts.push_back(readShaderFile(dir / files.libraries[i]) + "\n");
+    parts.push_back(source.read(files.libraries[i]) + "\n");
   }
   parts.push_back("#line 2 0\n");
   parts.push_back(main.substr(eol + 1));
   return parts;
 }
 
-std::string describeSources(const std::filesystem::path& dir, const ShaderStageFiles& files) {
-  std::string text = (dir / files.main).string();
+std::string describeSources(const ShaderSource& source, const ShaderStageFiles& files) {
+  std::string text = source.describe(files.main);
   for (std::size_t i = 0; i < files.libraries.size(); ++i) {
-    text += ", " + std::to_string(i + 1) + ": " + (dir / files.libraries[i]).string();
+    text += ", " + std::to_string(i + 1) + ": " + source.describe(files.libraries[i]);
   }
   return text;
 }
 
-GLuint compileStage(GLenum type, const std::filesystem::path& dir, const ShaderStageFiles& files,
+GLuint compileStage(GLenum type, const ShaderSource& source, const ShaderStageFiles& files,
                     const std::string& defines) {
-  const std::vector<std::string> parts = assembleStage(dir, files, defines);
+  const std::vector<std::string> parts = assembleStage(source, files, defines);
   std::vector<const char*> pointers;
   for (const auto& p : parts) pointers.push_back(p.c_str());
 
@@ -68,19 +52,19 @@ GLuint compileStage(GLenum type, const std::filesystem::path& dir, const ShaderS
   std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
   glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
   glDeleteShader(shader);
-  throw Error(ExitCode::BadInput, "GLSL compile error in " + (dir / files.main).string() +
+  throw Error(ExitCode::BadInput, "GLSL compile error in " + source.describe(files.main) +
                                       " (source numbers in the log: 0: " +
-                                      describeSources(dir, files) + "):\n" + log.c_str());
+                                      describeSources(source, files) + "):\n" + log.c_str());
 }
 
 }  // namespace
 
-GlProgram::GlProgram(const std::filesystem::path& dir, const ShaderStageFiles& vertex,
+GlProgram::GlProgram(const ShaderSource& source, const ShaderStageFiles& vertex,
                      const ShaderStageFiles& fragment, const std::string& defines) {
-  GLuint vs = compileStage(GL_VERTEX_SHADER, dir, vertex, defines);
+  GLuint vs = compileStage(GL_VERTEX_SHADER, source, vertex, defines);
   GLuint fs = 0;
   try {
-    fs = compileStage(GL_FRAGMENT_SHADER, dir, fragment, defines);
+    fs = compileStage(GL_FRAGMENT_SHADER, source, fragment, defines);
   } catch (...) {
     glDeleteShader(vs);
     throw;
@@ -102,8 +86,8 @@ GlProgram::GlProgram(const std::filesystem::path& dir, const ShaderStageFiles& v
   glGetProgramInfoLog(id_, static_cast<GLsizei>(log.size()), nullptr, log.data());
   glDeleteProgram(id_);
   id_ = 0;
-  throw Error(ExitCode::BadInput, "GLSL link error for " + (dir / vertex.main).string() + " + " +
-                                      (dir / fragment.main).string() + ":\n" + log.c_str());
+  throw Error(ExitCode::BadInput, "GLSL link error for " + source.describe(vertex.main) + " + " +
+                                      source.describe(fragment.main) + ":\n" + log.c_str());
 }
 
 GlProgram::~GlProgram() {

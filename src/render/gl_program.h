@@ -1,13 +1,13 @@
-// A GLSL program built from files in the shader folder, loaded at run time so looks can be tuned
-// without rebuilding. Shared code (lighting, sRGB) lives in library files spliced into a stage
-// right after its #version line, preceded by the program's #defines (its variant).
+// A GLSL program built from shader files (built in, or from a folder: see shader_source.h).
+// Shared code (lighting, sRGB) lives in library files spliced into a stage right after its
+// #version line, preceded by the program's #defines (its variant).
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "render/gl_api.h"
+#include "render/shader_source.h"
 
 namespace tumble::render {
 
@@ -21,7 +21,7 @@ class GlProgram {
   // Throws Error(MissingInput) naming a file that cannot be read, Error(BadInput) with the GLSL
   // info log when a stage does not compile or the program does not link.
   // `defines` (e.g. "#define TUMBLE_LIGHT_COUNT 2\n") goes right after #version in both stages.
-  GlProgram(const std::filesystem::path& dir, const ShaderStageFiles& vertex,
+  GlProgram(const ShaderSource& source, const ShaderStageFiles& vertex,
             const ShaderStageFiles& fragment, const std::string& defines = {});
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;

@@ -15,11 +15,11 @@ std::string definesFor(const LightingVariant& v) {
 
 }  // namespace
 
-ShaderPrograms::ShaderPrograms(std::filesystem::path dir) : dir_(std::move(dir)) {
+ShaderPrograms::ShaderPrograms(std::filesystem::path dir) : source_(std::move(dir)) {
   // One light with shadows is the usual scene; building it now also validates the files.
   lit(LightingVariant{});
   ground(LightingVariant{});
-  shadow_ = std::make_unique<GlProgram>(dir_, ShaderStageFiles{"shadow.vert", {}},
+  shadow_ = std::make_unique<GlProgram>(source_, ShaderStageFiles{"shadow.vert", {}},
                                         ShaderStageFiles{"shadow.frag", {}});
 }
 
@@ -29,7 +29,7 @@ const GlProgram& ShaderPrograms::get(Cache& cache, const char* name,
   if (it == cache.end()) {
     const std::string stem = name;
     auto program = std::make_unique<GlProgram>(
-        dir_, ShaderStageFiles{stem + ".vert", {}},
+        source_, ShaderStageFiles{stem + ".vert", {}},
         ShaderStageFiles{stem + ".frag", {"lighting.glsl"}}, definesFor(variant));
     it = cache.emplace(variant, std::move(program)).first;
   }

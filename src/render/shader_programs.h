@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "render/gl_program.h"
+#include "render/shader_source.h"
 
 namespace tumble::render {
 
@@ -22,7 +23,8 @@ struct LightingVariant {
 class ShaderPrograms {
  public:
   // Compiles the common variants now, so a missing or broken shader is reported at start-up
-  // (Error MissingInput / BadInput, see GlProgram).
+  // (Error MissingInput / BadInput, see GlProgram). `dir`: the folder to read the GLSL from;
+  // empty for the built-in copy.
   explicit ShaderPrograms(std::filesystem::path dir);
 
   const GlProgram& lit(const LightingVariant& variant) { return get(lit_, "lit", variant); }
@@ -35,7 +37,7 @@ class ShaderPrograms {
   using Cache = std::map<LightingVariant, std::unique_ptr<GlProgram>>;
   const GlProgram& get(Cache& cache, const char* name, const LightingVariant& variant);
 
-  std::filesystem::path dir_;
+  ShaderSource source_;
   Cache lit_, ground_;
   std::unique_ptr<GlProgram> shadow_;
 };
