@@ -1,5 +1,5 @@
 // Runs a scene from scenes/ without rendering, sampling every step, and measures what the
-// benchmark (shared/bench/SCENES.md) measures: penetration from the poses, not from the solver.
+// benchmark (docs/bench/scenes.md) measures: penetration from the poses, not from the solver.
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// The contact pipeline against closed forms, on the benchmark scenes (shared/bench/SCENES.md) at
+// The contact pipeline against closed forms, on the benchmark scenes (docs/bench/scenes.md) at
 // dt = 1/240 s with default settings. The thresholds are the contact issue's; where they came
 // from is said beside each.
 #include <catch2/catch.hpp>

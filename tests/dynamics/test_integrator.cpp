@@ -12,7 +12,7 @@ using namespace tumble;
 
 namespace {
 
-// The free-spin benchmark body (shared/bench/SCENES.md, S5): a 1.0 x 0.4 x 0.1 m box of 1 kg
+// The free-spin benchmark body (docs/bench/scenes.md, S5): a 1.0 x 0.4 x 0.1 m box of 1 kg
 // spinning at 5 rad/s about its intermediate (y) axis plus 0.01 rad/s about x, no gravity.
 World freeSpinWorld() {
   Scene s = parseScene(R"({"schema_version": 1, "simulation": {"gravity_m_s2": [0, 0, 0]},
@@ -88,7 +88,7 @@ TEST_CASE("torque-free rotation conserves energy and angular momentum (RK4)", "[
   CHECK(fine.momentum < 1e-12);   // L is the state and no torque acts: exact to rounding
   Drift coarse = spin(Integrator::Rk4, 1.0 / 240, 10);
   CHECK(coarse.energy < 1e-4);
-  // The Dzhanibekov effect: the reference solution (SCENES.md S5) flips 3 times in 10 s.
+  // The Dzhanibekov effect: the reference solution (docs/bench/scenes.md, S5) flips 3 times in 10 s.
   CHECK(fine.flips == 3);
 }
 

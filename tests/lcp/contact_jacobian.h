@@ -1,5 +1,6 @@
-// Test helper: LCP matrices of resting contacts from real contact Jacobians (seed 002; Baraff's
-// A and b). A contact row with direction d (a normal, or a tangent for friction) at world point p
+// Test helper: LCP matrices of resting contacts from real contact Jacobians (the A and b of
+// D. Baraff, "Fast contact force computation for nonpenetrating rigid bodies", SIGGRAPH 1994).
+// A contact row with direction d (a normal, or a tangent for friction) at world point p
 // acting on body a (and with the opposite sign on body b) is, per body, [dᵀ, ((p − x)×d)ᵀ]: the
 // rate of the separation along d from the body's linear and angular acceleration. Then
 //   A = J M⁻¹ Jᵀ,   b = J M⁻¹ F_ext   (+ velocity terms, zero for bodies at rest).

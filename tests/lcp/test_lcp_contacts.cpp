@@ -1,6 +1,7 @@
-// Redundant resting contacts from real contact Jacobians (seed 002: "four contact points ... and four
-// contact normals are exactly the same ... one contact point becomes a redundant point"): A is
-// singular, the solver must still return forces that hold the body exactly.
+// Redundant resting contacts from real contact Jacobians (four contact points sharing one contact
+// normal make one of them redundant; D. Baraff, "Fast contact force computation for
+// nonpenetrating rigid bodies", SIGGRAPH 1994): A is singular, the solver must still return forces
+// that hold the body exactly.
 #include "contact_jacobian.h"
 #include "dynamics/lcp/dantzig_solver.h"
 #include "dynamics/lcp/pgs_solver.h"

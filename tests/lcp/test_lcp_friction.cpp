@@ -1,4 +1,5 @@
-// Boxed LCPs with friction-dependent bounds (ODE's findex; seed 003, friction cones): a unit cube on
+// Boxed LCPs with friction-dependent bounds (ODE's findex; friction cones as in F. Xiang, "Robot
+// Control and Physical Simulation", lecture, UC San Diego CSE 291, 2020): a unit cube on
 // a 30° incline, modelled as level ground with gravity tilted by 30° about y, so x points down-slope.
 // Hand-derived values (weight W = m g):
 //   normal:  Σ f_n = W cos θ (no acceleration along the normal)
