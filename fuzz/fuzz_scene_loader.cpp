@@ -21,7 +21,7 @@ void checkBounds(const tumble::Scene& s) {
   if (s.render.frames < 1 || s.render.frames > 1000000) finding("frame count out of bounds");
   if (s.render.width < 16 || s.render.width > 8192 || s.render.height < 16 || s.render.height > 8192)
     finding("frame size out of bounds");
-  if (!(s.simulation.dt_s > 0) || s.simulation.steps_per_frame < 1) finding("bad step");
+  if (!(s.simulation.step.dt > 0) || s.simulation.steps_per_frame < 1) finding("bad step");
   for (const tumble::BodySpec& b : s.bodies)
     if (!b.position_m.allFinite() || !b.velocity_m_s.allFinite() || !b.orientation.coeffs().allFinite())
       finding("a body with a non-finite state was accepted");

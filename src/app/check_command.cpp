@@ -5,7 +5,7 @@
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "dynamics/pipeline.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 
 namespace tumble {
 namespace {
@@ -48,7 +48,7 @@ int run(const SceneOptions& o) {
   const RenderSpec& r = scene.render;
   std::printf("scene     %s (schema version %d): valid\n", scene.file.string().c_str(), scene.schema_version);
   printBodies(scene, built.world);
-  std::printf("pipeline  step %.6g s (%d per frame), gravity (%g, %g, %g) m/s^2\n", scene.simulation.dt_s,
+  std::printf("pipeline  step %.6g s (%d per frame), gravity (%g, %g, %g) m/s^2\n", scene.simulation.step.dt,
               scene.simulation.steps_per_frame, scene.simulation.gravity_m_s2.x(),
               scene.simulation.gravity_m_s2.y(), scene.simulation.gravity_m_s2.z());
   for (const std::string& line : Pipeline(built.world, built.step).describe(built.step)) std::printf("  %s\n", line.c_str());

@@ -13,7 +13,7 @@
 #include "app/scene_options.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "io/atomic_file.h"
 #include "io/make_frame_sink.h"
 #include "io/output_path.h"

@@ -12,14 +12,14 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("scene", o.scene, "Scene file (JSON, schema version 1)")->required();
   command.add_option("--fps", o.fps, "Frames per second (overrides render.fps)");
   command.add_option("--duration", o.duration_s, "Seconds to simulate (overrides render.duration_s)");
-  command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.dt_s)");
-  command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.integrator)")
+  command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.step.dt)");
+  command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.step.integrator)")
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
   command.add_option("--contact-model", o.contact_model,
-                     "baraff | time_stepping (overrides simulation.contact_model)")
+                     "baraff | time_stepping (overrides simulation.step.model)")
       ->check(CLI::IsMember({"baraff", "time_stepping"}));
   command.add_flag("--no-sleep", o.no_sleep,
-                   "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.sleep)");
+                   "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.step.sleep.enabled)");
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
 }
@@ -41,10 +41,10 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
   if (o.duration_s) setDuration(scene, *o.duration_s);
   if (o.dt_s) setTimeStep(scene, *o.dt_s, "--dt");
   if (!o.integrator.empty())
-    scene.simulation.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
+    scene.simulation.step.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
   if (!o.contact_model.empty())
-    scene.simulation.contact_model = o.contact_model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
-  if (o.no_sleep) scene.simulation.sleep = false;
+    scene.simulation.step.model = o.contact_model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
+  if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
   return scene;
 }
 

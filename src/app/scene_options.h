@@ -15,7 +15,7 @@ struct SceneOptions {
   std::optional<double> dt_s;
   std::string integrator;
   std::string contact_model;   // empty: the scene's
-  bool no_sleep = false;        // --no-sleep: simulation.sleep = false
+  bool no_sleep = false;        // --no-sleep: simulation.step.sleep.enabled = false
   std::optional<int> fps;
   std::optional<double> duration_s;
   bool quiet = false, verbose = false;

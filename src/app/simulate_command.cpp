@@ -9,7 +9,7 @@
 #include "app/scene_options.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "io/trajectory_csv.h"
 
 namespace tumble {

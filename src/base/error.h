@@ -7,7 +7,7 @@
 
 namespace tumble {
 
-// Exit codes follow sysexits.h, the convention of command-line tools (see DESIGN.md).
+// Exit codes follow sysexits.h, the convention of command-line tools (README, "Exit codes").
 enum class ExitCode : int {
   Ok = 0,
   Usage = 64,        // EX_USAGE: bad command line

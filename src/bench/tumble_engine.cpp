@@ -6,22 +6,33 @@
 
 #include "bench/engine.h"
 #include "dynamics/pipeline.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 
 namespace tumble::bench {
 namespace {
 
-struct TumbleOptions {
-  Integrator integrator = Integrator::Rk4;
-  double tolerance_m = 1e-6;   // contact-time search: touching within this, deeper is back-stepped
-  ContactModel model = ContactModel::Baraff;
-  int sweeps = 200;            // time stepping: Gauss-Seidel sweeps per step at most
-  int pivoting_max_rows = 256; // islands up to this many rows are solved by pivoting
-  // Freeze islands at rest (dynamics/sleeping.h). Off in every setting but the "-sleep" ones: the
-  // error columns measure the contact solve, which a frozen body would hide; on, the pile time
-  // compares with Bullet's default, which sleeps.
-  bool sleep = false;
-};
+// A tumble setting is the simulation's own StepSettings (dynamics/settings.h); the benchmark sets
+// the step per run. Sleeping is off in every setting but the "-sleep" one: the error columns
+// measure the contact solve, which a frozen body would hide; on, the pile time compares with
+// Bullet's default, which sleeps.
+StepSettings baraff(Integrator integrator, double tolerance_m, int pivoting_max_rows = 256) {
+  StepSettings s;
+  s.integrator = integrator;
+  s.contact.tolerance_m = tolerance_m;
+  s.contact.max_direct_rows = pivoting_max_rows;
+  s.model = ContactModel::Baraff;
+  return s;
+}
+
+StepSettings timeStepping(int sweeps, int pivoting_max_rows, bool sleep = false) {
+  StepSettings s;
+  s.integrator = Integrator::SemiImplicitEuler;
+  s.model = ContactModel::TimeStepping;
+  s.time_stepping_sweeps = sweeps;
+  s.contact.max_direct_rows = pivoting_max_rows;
+  s.sleep.enabled = sleep;
+  return s;
+}
 
 BodySpec boxSpec(const BoxBody& b, const BenchScene& scene, bool is_static, int index) {
   BodySpec spec;
@@ -40,19 +51,14 @@ BodySpec boxSpec(const BoxBody& b, const BenchScene& scene, bool is_static, int 
   return spec;
 }
 
-Scene tumbleScene(const BenchScene& bench, double dt, const TumbleOptions& opt) {
+Scene tumbleScene(const BenchScene& bench, double dt, const StepSettings& opt) {
   Scene scene;
   scene.file = bench.id;
   scene.name = bench.id;
-  scene.simulation.dt_s = dt;
+  scene.simulation.step = opt;
+  scene.simulation.step.dt = dt;
   scene.simulation.steps_per_frame = 1;
-  scene.simulation.integrator = opt.integrator;
   scene.simulation.gravity_m_s2 = bench.gravity;
-  scene.simulation.contact_tolerance_m = opt.tolerance_m;
-  scene.simulation.contact_model = opt.model;
-  scene.simulation.time_stepping_sweeps = opt.sweeps;
-  scene.simulation.pivoting_max_rows = opt.pivoting_max_rows;
-  scene.simulation.sleep = opt.sleep;
   if (bench.ground) {
     BodySpec ground;
     ground.name = "ground";
@@ -71,7 +77,7 @@ Scene tumbleScene(const BenchScene& bench, double dt, const TumbleOptions& opt) 
 
 class TumbleEngine : public Engine {
  public:
-  TumbleEngine(const BenchScene& bench, double dt, const TumbleOptions& opt)
+  TumbleEngine(const BenchScene& bench, double dt, const StepSettings& opt)
       : built_(buildWorld(tumbleScene(bench, dt, opt))),
         first_moving_(built_.world.bodies.size() - bench.bodies.size()),
         pipeline_(built_.world, built_.step) {
@@ -115,7 +121,7 @@ class TumbleEngine : public Engine {
   long steps_ = 0;
 };
 
-EngineSetting setting(const std::string& name, TumbleOptions opt, bool on_piles) {
+EngineSetting setting(const std::string& name, const StepSettings& opt, bool on_piles) {
   EngineSetting s = settingOf<TumbleEngine>(name, "tumble", opt);
   // Piles are costly for tumble today (tens of wall seconds per simulated second): only the
   // default setting runs there unless asked for by name.
@@ -130,21 +136,20 @@ EngineSetting setting(const std::string& name, TumbleOptions opt, bool on_piles)
 
 std::vector<EngineSetting> tumbleSettings() {
   return {
-      setting("tumble-rk4", {Integrator::Rk4, 1e-6}, true),
+      setting("tumble-rk4", baraff(Integrator::Rk4, 1e-6), true),
       // The Baraff model with every resting island at the velocity level (pivoting_max_rows 0):
-      // the setting for piles (README, "Where tumble is behind: piles").
-      setting("tumble-rk4-gs", {Integrator::Rk4, 1e-6, ContactModel::Baraff, 200, 0}, false),
-      setting("tumble-rk4-tol1e-4", {Integrator::Rk4, 1e-4}, false),
-      setting("tumble-semi", {Integrator::SemiImplicitEuler, 1e-6}, false),
-      setting("tumble-semi-tol1e-4", {Integrator::SemiImplicitEuler, 1e-4}, false),
+      // the setting for piles (docs/bench/results.md).
+      setting("tumble-rk4-gs", baraff(Integrator::Rk4, 1e-6, 0), false),
+      setting("tumble-rk4-tol1e-4", baraff(Integrator::Rk4, 1e-4), false),
+      setting("tumble-semi", baraff(Integrator::SemiImplicitEuler, 1e-6), false),
+      setting("tumble-semi-tol1e-4", baraff(Integrator::SemiImplicitEuler, 1e-4), false),
       // The time-stepping contact model: no back-stepping, so it runs the piles too. Default:
       // Gauss-Seidel (at most 200 sweeps) then pivoting for the small islands it leaves unconverged;
       // -gs: every island by Gauss-Seidel alone, 30 or 10 sweeps, as Bullet and ODE quickstep do.
-      setting("tumble-ts", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 200, 256}, true),
-      setting("tumble-ts-gs", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 30, 0}, true),
-      setting("tumble-ts-gs10", {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 10, 0}, true),
-      setting("tumble-ts-gs10-sleep",
-              {Integrator::SemiImplicitEuler, 1e-6, ContactModel::TimeStepping, 10, 0, true}, true),
+      setting("tumble-ts", timeStepping(200, 256), true),
+      setting("tumble-ts-gs", timeStepping(30, 0), true),
+      setting("tumble-ts-gs10", timeStepping(10, 0), true),
+      setting("tumble-ts-gs10-sleep", timeStepping(10, 0, true), true),
   };
 }
 

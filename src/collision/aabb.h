@@ -1,6 +1,6 @@
 // Axis-aligned bounding boxes of convex pieces: what the broad phase sorts, and the swept box that
 // bounds a piece's motion over one step so that a collision inside the step is never skipped
-// (DESIGN.md, contact pipeline steps 1 and 3).
+// (docs/architecture.md, detection and back-stepping).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,6 @@
-// Broad phase: which pairs of convex pieces have overlapping AABBs (DESIGN.md, contact pipeline
-// step 1; seed 000 "sweep/sort algorithm O(n log n + k)"). Sort and sweep on one axis, the order
+// Broad phase: which pairs of convex pieces have overlapping AABBs (docs/architecture.md,
+// detection; Yang, "Rigid Bodies and Contacts", 2020: "sweep/sort algorithm O(n log n + k)").
+// Sort and sweep on one axis, the order
 // kept between steps and repaired with insertion sort, which is near O(n) when bodies move little.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Contact reduction: at most four points that keep the support polygon (DESIGN.md step 2).
+// Contact reduction: at most four points that keep the support polygon (docs/architecture.md, narrow phase).
 // The solver needs the polygon a body rests on, not every vertex of it; four points bound a
 // quadrilateral, and picking them by area keeps as much of the support as four points can.
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Narrow phase: contact manifolds between pairs of convex pieces by the separating-axis test
-// (DESIGN.md, contact pipeline step 2; seed 000 "separating plane", "defining face/edge").
+// (docs/architecture.md, narrow phase; Yang, "Rigid Bodies and Contacts", 2020: "separating plane", "defining face/edge").
 //
 // Conventions:
 //   normal   unit, world, pointing from A to B (B is pushed along +normal).

@@ -1,5 +1,5 @@
-// The separating-axis test (seed 000: "axes are normals of faces or the cross product of two
-// edges, one from each object"; seed 003: O(e1 e2) axes). Edge pairs are pruned on the Gauss map:
+// The separating-axis test (Yang, "Rigid Bodies and Contacts", 2020: "axes are normals of faces or the cross product of two
+// edges, one from each object"; Xiang, "Robot Control and Physical Simulation", 2020: O(e1 e2) axes). Edge pairs are pruned on the Gauss map:
 // only pairs whose arcs cross form a face of the Minkowski difference A - B, and only those can
 // give the separating plane (Gregorius, GDC 2013/2015).
 #include <cassert>

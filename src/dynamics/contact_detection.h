@@ -1,4 +1,4 @@
-// Contact pipeline steps 1-2 (DESIGN.md): the broad phase over the AABBs of every convex piece,
+// Detection (docs/architecture.md): the broad phase over the AABBs of every convex piece,
 // then the narrow phase on the candidate pairs, giving the world's contact points. The ground
 // (plane bodies) is a half-space tested against every moving piece directly.
 #pragma once

@@ -1,7 +1,7 @@
 // The contact Jacobian J and the Delassus matrix A = J M^-1 J^T: how a unit force (or impulse)
 // along one contact direction changes the relative acceleration (or velocity) along another. Both
 // the impulse solve (colliding contacts) and the force solve (resting contacts) are LCPs in A
-// (seed 000, the impulse formula; seed 002, Baraff's a = A f + b).
+// (the impulse formula of Yang, "Rigid Bodies and Contacts", 2020; Baraff's a = A f + b, 1994).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-// Numerical faults at run time (the third tier of errors, STYLE.md §5): a NaN or infinite state,
+// Numerical faults at run time (the third tier of errors: bad input and missing files come first): a NaN or infinite state,
 // runaway energy, or penetration beyond a limit. Checked after every step, so a fault is reported
 // the step it happens, with the bodies, the time and the stages that ran in that step, instead of
 // being rendered as garbage. The simulator stops on the first fault unless told to keep going;

@@ -10,4 +10,9 @@ void applyGravity(const World& world, std::vector<Wrench>& wrenches) {
   }
 }
 
+void applyGravityImpulse(World& world, double dt) {
+  for (RigidBody& b : world.bodies)
+    if (!b.is_static) b.P += b.mass * world.gravity * dt;
+}
+
 }  // namespace tumble

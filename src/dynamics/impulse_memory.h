@@ -1,6 +1,6 @@
 // Warm start for the time-stepping model: the impulse each contact point took in the last step,
 // found again in this step by its pair of bodies and its position on them. A pile at rest then
-// starts Gauss-Seidel at last step's answer and needs a few sweeps instead of hundreds (seed 003:
+// starts Gauss-Seidel at last step's answer and needs a few sweeps instead of hundreds (Xiang, "Robot Control and Physical Simulation", 2020:
 // PGS converges slowly from zero on stacks).
 //
 // A point is kept in body A's frame, so it follows A as it moves; two points of the same pair of

@@ -6,7 +6,7 @@ namespace tumble {
 namespace {
 
 // The state of one body as the ODE sees it: y = (x, q, P, L), dy/dt = (P/m, 1/2 [0,w] q, F, tau)
-// (seed 000, "rigid body state"). Derivatives of q are kept as plain 4-vectors.
+// (Yang, "Rigid Bodies and Contacts", 2020: "rigid body state"). Derivatives of q are kept as plain 4-vectors.
 struct State {
   Eigen::Vector3d x, P, L;
   Eigen::Vector4d q;   // w, x, y, z

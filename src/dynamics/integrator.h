@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "dynamics/step_settings.h"
+#include "dynamics/settings.h"
 #include "dynamics/world.h"
 
 namespace tumble {

@@ -3,7 +3,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
-#include "dynamics/contact_jacobian.h"
+#include "dynamics/contact_rows.h"
 
 namespace tumble {
 namespace {
@@ -22,7 +22,7 @@ bool projectPair(World& world, const std::vector<const Contact*>& points, double
   RigidBody& A = world.bodies[points.front()->a];
   RigidBody& B = world.bodies[points.front()->b];
   if (A.inv_mass + B.inv_mass <= 0) return false;
-  std::vector<ContactRow> rows;
+  ContactRows rows;   // normal rows only
   std::vector<double> lift;
   const Contact* deepest = nullptr;
   double shallowest = INFINITY;
@@ -30,7 +30,7 @@ bool projectPair(World& world, const std::vector<const Contact*>& points, double
     if (c->depth < -tol) continue;   // apart: free to move
     if (!deepest || c->depth > deepest->depth) deepest = c;
     shallowest = std::min(shallowest, c->depth);
-    rows.push_back(rowAlong(world, *c, c->normal));
+    rows.addContact(world, *c, false);
     lift.push_back(c->depth - 0.5 * tol);   // every touching point to tol/2 deep
   }
   if (!deepest || deepest->depth <= tol) return false;
@@ -44,17 +44,17 @@ bool projectPair(World& world, const std::vector<const Contact*>& points, double
     B.x += deepest->normal * (push * wb / (wa + wb));
     return true;
   }
-  const Eigen::MatrixXd W = delassus(world, rows);
+  const Eigen::MatrixXd W = delassus(world, rows.rows);
   const Eigen::VectorXd d = Eigen::Map<const Eigen::VectorXd>(lift.data(), static_cast<Eigen::Index>(lift.size()));
   const Eigen::VectorXd p = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(W).solve(d);
   if (!p.allFinite()) return false;
   Eigen::Vector3d fa = Eigen::Vector3d::Zero(), ta = fa, fb = fa, tb = fa;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Eigen::Vector3d push = p[static_cast<Eigen::Index>(i)] * rows[i].dir;
+  for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+    const Eigen::Vector3d push = p[static_cast<Eigen::Index>(i)] * rows.rows[i].dir;
     fb += push;
-    tb += rows[i].rb.cross(push);
+    tb += rows.rows[i].rb.cross(push);
     fa -= push;
-    ta -= rows[i].ra.cross(push);
+    ta -= rows.rows[i].ra.cross(push);
   }
   if (!A.is_static) displace(A, A.inv_mass * fa, inverseInertiaWorld(A) * ta);
   if (!B.is_static) displace(B, B.inv_mass * fb, inverseInertiaWorld(B) * tb);

@@ -1,4 +1,4 @@
-// Drift projection (contact pipeline step 7, DESIGN.md) for one pair of bodies with a point
+// Drift projection (docs/architecture.md) for one pair of bodies with a point
 // deeper than the tolerance. Every touching point of the pair (|depth| <= tol) is brought to half
 // the tolerance deep; points further apart are free.
 //  - A pair flush within the tolerance (its touching points' depths differ by at most 2 tol: a

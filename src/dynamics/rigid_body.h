@@ -1,5 +1,5 @@
 // A rigid body: its constant properties (mass, principal inertia, convex pieces in the body frame)
-// and its state (x, q, P, L) as in the lecture notes (seed 000): position of the centre of mass,
+// and its state (x, q, P, L) as in Yang, "Rigid Bodies and Contacts", 2020: position of the centre of mass,
 // orientation, linear momentum, angular momentum, all in the world frame.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geometry/convex_piece.h"
-#include "scene/scene.h"
+#include "geometry/shape_kind.h"
 
 namespace tumble {
 

@@ -1,4 +1,4 @@
-// Projected Gauss-Seidel over contact rows without forming A = J M^-1 J^T (seed 003: "physical
+// Projected Gauss-Seidel over contact rows without forming A = J M^-1 J^T (Xiang, "Robot Control and Physical Simulation", 2020: "physical
 // simulators typically use projected Gauss-Seidel"). Each body keeps M^-1 J^T f, the acceleration
 // the forces found so far give it, so visiting a row costs a few dot products, not a row of A: a
 // sweep is linear in the number of rows, where the pivoting solver's cost grows with their cube.

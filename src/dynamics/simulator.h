@@ -6,7 +6,7 @@
 
 #include "dynamics/fault_check.h"
 #include "dynamics/pipeline.h"
-#include "dynamics/step_settings.h"
+#include "dynamics/settings.h"
 #include "dynamics/trajectory.h"
 #include "dynamics/world.h"
 

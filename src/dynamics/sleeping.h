@@ -1,4 +1,4 @@
-// Sleeping (DESIGN.md: "bodies at rest sleep"). An island of moving bodies that has stayed slower
+// Sleeping (docs/architecture.md: "bodies at rest sleep"). An island of moving bodies that has stayed slower
 // than a speed and a spin threshold for a while, and rests on something fixed, is frozen: its
 // momenta are zeroed and, to every stage of the step, its bodies are static — not integrated, no
 // gravity, no contact rows, and no narrow phase between two of them or with the ground. Anything
@@ -14,23 +14,12 @@
 #include <vector>
 
 #include "dynamics/contact.h"
+#include "dynamics/settings.h"
 #include "dynamics/world.h"
 
 namespace tumble {
 
 class ContactDetector;
-
-struct SleepSettings {
-  // Off unless asked: a scene file asks by default (scene.h, "sleep": true); steps set up by hand
-  // (tests, the benchmark's own engines) say so themselves.
-  bool enabled = false;
-  // Box2D's thresholds (b2_linearSleepTolerance 1 cm/s, b2_angularSleepTolerance 2 deg/s,
-  // b2_timeToSleep 0.5 s): a body this slow moves under 5 mm and turns under 1 deg before it
-  // sleeps. Bullet's defaults (0.8 m/s, 1 rad/s, 2 s) are far coarser.
-  double speed_m_s = 0.01;
-  double spin_rad_s = 0.035;
-  double after_s = 0.5;
-};
 
 struct SleepCounters {
   long islands_slept = 0, islands_woken = 0;

@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/settings.h"
+#include "geometry/shape_kind.h"
+
 namespace tumble {
 
 // Where a value was written, so later stages (mesh import) can point at it in their errors.
@@ -16,14 +19,6 @@ struct SourceLocation {
   std::string pointer;   // JSON pointer, e.g. "/bodies/2/mesh"
   int line = 0, column = 0;
 };
-
-enum class ShapeKind { Mesh, Box, Sphere, Plane };
-enum class Integrator { SemiImplicitEuler, Rk4 };
-// How contacts are handled (DESIGN.md, "other contact models"):
-//   Baraff        event-driven: back-step to each first contact, Newton impulses, resting-force LCP
-//   TimeStepping  Moreau / Stewart-Trinkle: one velocity-level impulse problem per step, solved by
-//                 warm-started Gauss-Seidel; no back-stepping (fast, first order in dt)
-enum class ContactModel { Baraff, TimeStepping };
 
 struct BodySpec {
   std::string name;
@@ -78,20 +73,16 @@ struct RenderSpec {
   int crf = 23;                                        // H.264 quality
 };
 
+// The simulation's settings are dynamics/settings.h's, filled straight from the file; a scene
+// asks for sleeping unless it says otherwise.
 struct SimulationSpec {
-  double dt_s = 1.0 / 240;                             // exactly frame interval / steps_per_frame
-  int steps_per_frame = 8;
-  Integrator integrator = Integrator::Rk4;
+  StepSettings step = withSleep(StepSettings{});
+  int steps_per_frame = 8;                             // dt = frame interval / steps_per_frame exactly
   Eigen::Vector3d gravity_m_s2{0, 0, -9.81};
-  bool regula_falsi = false;                           // contact time search: bisection or secant
-  int pivoting_max_rows = 256;                         // larger resting islands: Gauss-Seidel
-  double contact_tolerance_m = 1e-6;                   // touching within this; deeper is back-stepped
-  ContactModel contact_model = ContactModel::Baraff;
-  int time_stepping_sweeps = 200;                      // Gauss-Seidel sweeps per step at most
-  bool sleep = true;                                   // quiet islands freeze (dynamics/sleeping.h)
-  double sleep_speed_m_s = 0.01;                       // ... when slower than this
-  double sleep_spin_rad_s = 0.035;                     // ... and turning slower than this
-  double sleep_after_s = 0.5;                          // ... for this long
+  static StepSettings withSleep(StepSettings s) {
+    s.sleep.enabled = true;
+    return s;
+  }
 };
 
 struct Scene {

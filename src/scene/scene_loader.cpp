@@ -56,24 +56,26 @@ void readRender(ObjectReader& in, RenderSpec& r) {
 }
 
 void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) {
-  sim.integrator = readIntegrator(in, "integrator", sim.integrator);
+  StepSettings& step = sim.step;
+  step.integrator = readIntegrator(in, "integrator", step.integrator);
   sim.gravity_m_s2 = in.vector3("gravity_m_s2", sim.gravity_m_s2, {-1e4, 1e4});
-  sim.regula_falsi = readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
-  sim.pivoting_max_rows = in.integer("pivoting_max_rows", sim.pivoting_max_rows, 0, 100000);
-  sim.contact_tolerance_m = in.number("contact_tolerance_m", sim.contact_tolerance_m, {1e-9, 1e-2});
-  sim.contact_model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"}) == "baraff"
-                          ? ContactModel::Baraff
-                          : ContactModel::TimeStepping;
-  sim.time_stepping_sweeps = in.integer("time_stepping_sweeps", sim.time_stepping_sweeps, 1, 100000);
-  sim.sleep = in.boolean("sleep", sim.sleep);
-  sim.sleep_speed_m_s = in.number("sleep_speed_m_s", sim.sleep_speed_m_s, {0, 10, true, false});
-  sim.sleep_spin_rad_s = in.number("sleep_spin_rad_s", sim.sleep_spin_rad_s, {0, 100, true, false});
-  sim.sleep_after_s = in.number("sleep_after_s", sim.sleep_after_s, {0, 1e6, true, false});
+  step.contact.regula_falsi =
+      readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
+  step.contact.max_direct_rows = in.integer("pivoting_max_rows", step.contact.max_direct_rows, 0, 100000);
+  step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
+  step.model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"}) == "baraff"
+                   ? ContactModel::Baraff
+                   : ContactModel::TimeStepping;
+  step.time_stepping_sweeps = in.integer("time_stepping_sweeps", step.time_stepping_sweeps, 1, 100000);
+  step.sleep.enabled = in.boolean("sleep", step.sleep.enabled);
+  step.sleep.speed_m_s = in.number("sleep_speed_m_s", step.sleep.speed_m_s, {0, 10, true, false});
+  step.sleep.spin_rad_s = in.number("sleep_spin_rad_s", step.sleep.spin_rad_s, {0, 100, true, false});
+  step.sleep.after_s = in.number("sleep_after_s", step.sleep.after_s, {0, 1e6, true, false});
   // Every frame must fall on a step, so the step divides the frame interval. The file gives dt_s
   // as a rounded decimal (1/240 = 0.0041667); the exact step is the interval / steps per frame.
   // Without dt_s the step is the one nearest 1/240 s that divides the frame interval.
   bool given = in.has("dt_s");
-  double dt = in.number("dt_s", sim.dt_s, {0, 0.1, true, false});
+  double dt = in.number("dt_s", step.dt, {0, 0.1, true, false});
   double interval = 1.0 / fps;
   double steps = interval / dt;
   long whole = std::max(1L, std::lround(steps));
@@ -89,7 +91,7 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
                         " steps each are more than " + formatNumber(kMaxSteps) +
                         " steps; use a larger step or fewer frames");
   sim.steps_per_frame = static_cast<int>(whole);
-  sim.dt_s = interval / whole;
+  step.dt = interval / whole;
   in.rejectUnknownKeys();
 }
 

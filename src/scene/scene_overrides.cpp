@@ -33,19 +33,19 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
           std::to_string(std::max(1L, whole) * scene.render.fps));
   if (whole > 100000) usage(flag + ": more than 100000 steps per frame");
   scene.simulation.steps_per_frame = static_cast<int>(whole);
-  scene.simulation.dt_s = interval / whole;
+  scene.simulation.step.dt = interval / whole;
   checkTotalSteps(scene, flag);
 }
 
 void setFrameRate(Scene& scene, int fps) {
   if (fps < 1 || fps > 1000) usage("--fps: " + std::to_string(fps) + " is outside [1, 1000]");
   double duration = scene.render.frames / double(scene.render.fps);
-  double dt = scene.simulation.dt_s;
+  double dt = scene.simulation.step.dt;
   scene.render.fps = fps;
   scene.render.frames = std::max(1, static_cast<int>(std::lround(duration * fps)));
   long whole = std::max(1L, std::lround(1.0 / fps / dt));
   scene.simulation.steps_per_frame = static_cast<int>(whole);
-  scene.simulation.dt_s = 1.0 / fps / whole;
+  scene.simulation.step.dt = 1.0 / fps / whole;
   checkTotalSteps(scene, "--fps");
 }
 

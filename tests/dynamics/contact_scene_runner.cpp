@@ -5,7 +5,7 @@
 #include "collision/collision_hull.h"
 #include "collision/narrow_phase.h"
 #include "dynamics/contact_detection.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
 
@@ -44,7 +44,7 @@ SceneRun runScene(const std::string& name, double seconds,
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + name + ".json");
   // These tests hold the contact solve itself to the thresholds: sleeping would freeze
   // whatever it reached. A test that is about sleeping turns it back on in `edit`.
-  scene.simulation.sleep = false;
+  scene.simulation.step.sleep.enabled = false;
   if (edit) edit(scene);
   setDuration(scene, seconds);
   scene.render.frames += 1;   // frame k is at (k-1)/fps: one more frame reaches `seconds`

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dynamics/simulator.h"
+#include "scene/scene.h"
 
 namespace tumble::test {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "dynamics/simulator.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "dynamics/simulator.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;
@@ -69,11 +69,11 @@ TEST_CASE("free fall matches the closed form", "[dynamics]") {
     CHECK(std::abs(x.z() - (10 + 5 * t - 0.5 * g * t * t)) < 1e-9);
   }
   SECTION("semi-implicit Euler has its known first-order offset 1/2 g t dt") {
-    s.simulation.integrator = Integrator::SemiImplicitEuler;
+    s.simulation.step.integrator = Integrator::SemiImplicitEuler;
     BuiltWorld built = buildWorld(s);
     Simulator sim(std::move(built.world), {built.step, s.simulation.steps_per_frame, 61});
     Trajectory tr = sim.run();
-    double dt = s.simulation.dt_s;
+    double dt = s.simulation.step.dt;
     // v_{n+1} = v_n - g dt, x_{n+1} = x_n + v_{n+1} dt  =>  x_n = x0 + v0 t - g dt^2 n(n+1)/2.
     double expected = 10 + 5 * t - 0.5 * g * t * t - 0.5 * g * t * dt;
     CHECK(std::abs(tr.frames.back()[0].x.z() - expected) < 1e-9);

@@ -12,7 +12,7 @@
 #include <functional>
 
 #include "contact_scene_runner.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;
@@ -101,7 +101,7 @@ TEST_CASE("pile: after 5 s all 100 pieces rest inside the bin (reached: 0.078 m/
 // piece in it is quiet, and the kicks above keep some islands awake (`tumble simulate
 // scenes/pile.json -v`, another run: 72 of 100 asleep at the end, one piece at 9.5e-3 m/s).
 TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (reached: 0.047 m/s)", "[.][contact][pile][sleep][!shouldfail]") {
-  PileOutcome out = runPile(5, [](Scene& s) { s.simulation.sleep = true; });
+  PileOutcome out = runPile(5, [](Scene& s) { s.simulation.step.sleep.enabled = true; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
   CHECK(out.penetration < 1e-3);
@@ -115,7 +115,7 @@ TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (rea
 // below 5e-5 m/s from 3.5 s; without near contacts, 7 pieces above 1e-3 m/s at 5 s in twice the
 // time.
 TEST_CASE("pile: after 5 s with every island at the velocity level all 100 pieces rest inside the bin (reached: 8.1e-3 m deep)", "[.][contact][pile][!shouldfail]") {
-  PileOutcome out = runPile(5, [](Scene& s) { s.simulation.pivoting_max_rows = 0; });
+  PileOutcome out = runPile(5, [](Scene& s) { s.simulation.step.contact.max_direct_rows = 0; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
   CHECK(out.penetration < 1e-3);

@@ -7,7 +7,7 @@
 
 #include "dynamics/contact_detection.h"
 #include "dynamics/position_projection.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;

@@ -5,9 +5,9 @@
 
 #include "dynamics/contact_detection.h"
 #include "dynamics/contact_jacobian.h"
-#include "dynamics/contact_solver.h"
+#include "dynamics/baraff/resting_forces.h"
 #include "dynamics/row_gauss_seidel.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;
@@ -122,7 +122,7 @@ TEST_CASE("resting islands above the pivoting limit are solved by Gauss-Seidel a
     std::vector<Wrench> wrenches(r.world.bodies.size());
     wrenches[r.box].force = box.mass * r.world.gravity;
     ContactSolveStats stats;
-    addRestingForces(r.world, r.contacts, settings, wrenches, stats, 1.0 / 240);
+    addRestingForces(r.contacts, {r.world, settings, 1.0 / 240, nullptr, wrenches, stats});
     INFO("pivoting limit " << limit << " rows");
     CHECK(stats.iterative_islands == (limit == 0 ? 1 : 0));
     CHECK(wrenches[r.box].force.norm() / mg < 1e-6);
@@ -144,7 +144,7 @@ TEST_CASE("with a memory, islands above the pivoting limit start from the last c
     std::vector<Wrench> wrenches(r.world.bodies.size());
     wrenches[r.box].force = box.mass * r.world.gravity;
     ContactSolveStats stats;
-    addRestingForces(r.world, r.contacts, settings, wrenches, stats, 1.0 / 240, &memory);
+    addRestingForces(r.contacts, {r.world, settings, 1.0 / 240, &memory, wrenches, stats});
     INFO("call " << call << ": " << stats.sweeps << " sweeps");
     CHECK(stats.iterative_islands == 1);
     CHECK(stats.unconverged_sweeps == 0);
@@ -180,7 +180,7 @@ TEST_CASE("at the velocity level, near contacts keep a lifted edge from being ov
   std::vector<Wrench> wrenches(r.world.bodies.size());
   wrenches[r.box].force = box.mass * r.world.gravity;
   ContactSolveStats stats;
-  addRestingForces(r.world, r.contacts, settings, wrenches, stats, dt, &memory);
+  addRestingForces(r.contacts, {r.world, settings, dt, &memory, wrenches, stats});
   REQUIRE(stats.iterative_islands == 1);
   // Velocities after the step under these forces (the box starts at rest).
   const Eigen::Vector3d v = wrenches[r.box].force * box.inv_mass * dt;

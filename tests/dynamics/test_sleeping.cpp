@@ -13,8 +13,8 @@ using tumble::test::runScene;
 namespace {
 
 void sleepOn(Scene& s, ContactModel model) {
-  s.simulation.sleep = true;
-  s.simulation.contact_model = model;
+  s.simulation.step.sleep.enabled = true;
+  s.simulation.step.model = model;
 }
 
 // scenes/rest.json with a second unit cube, 1 kg, inelastic, dropped from its bottom face 3.5 m

@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include "dynamics/contact_detection.h"
-#include "dynamics/contact_lcp.h"
-#include "dynamics/contact_solver.h"
-#include "dynamics/world_builder.h"
+#include "dynamics/contact_rows.h"
+#include "dynamics/baraff/collisions.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "dynamics/simulator.h"
-#include "dynamics/time_of_impact.h"
-#include "dynamics/world_builder.h"
+#include "dynamics/baraff/time_of_impact.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;

@@ -1,4 +1,4 @@
-// The time-stepping contact model (simulation.contact_model = "time_stepping") on the benchmark
+// The time-stepping contact model (simulation.step.model = "time_stepping") on the benchmark
 // scenes, against closed forms. It is first order in dt, so its bounds are looser than the Baraff
 // model's where the step shows; each says where it came from. Small islands are solved exactly
 // by pivoting (rest, stacks, the mass ratio stay exact); the pile uses Gauss-Seidel.
@@ -8,7 +8,7 @@
 
 #include "contact_scene_runner.h"
 #include "dynamics/impulse_memory.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 using namespace tumble;
@@ -16,7 +16,7 @@ using tumble::test::runScene;
 
 namespace {
 
-void timeStepping(Scene& scene) { scene.simulation.contact_model = ContactModel::TimeStepping; }
+void timeStepping(Scene& scene) { scene.simulation.step.model = ContactModel::TimeStepping; }
 
 const BodySample& last(const test::SceneRun& run, int body) { return run.trajectory.frames.back()[body]; }
 const BodySample& first(const test::SceneRun& run, int body) { return run.trajectory.frames.front()[body]; }
@@ -79,7 +79,7 @@ TEST_CASE("time stepping: a stack of 10 stands at 1/60 s", "[contact][time_stepp
     timeStepping(s);
     s.simulation.steps_per_frame = 1;   // 30 fps: dt = 1/30 s would be too coarse; 1/60 s below
     s.render.fps = 60;
-    s.simulation.dt_s = 1.0 / 60;
+    s.simulation.step.dt = 1.0 / 60;
   });
   const int top = static_cast<int>(run.trajectory.body_names.size()) - 1;
   // Pivoted exactly (120 rows): nothing moves beyond rounding, at a step where Gauss-Seidel
@@ -108,7 +108,7 @@ TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, u
       deepest_late = std::max(deepest_late, test::worldPenetration(w));
   }, 1000000, [](Scene& s) {
     timeStepping(s);
-    s.simulation.pivoting_max_rows = 0;   // every island by Gauss-Seidel: the fast setting for piles
+    s.simulation.step.contact.max_direct_rows = 0;   // every island by Gauss-Seidel: the fast setting for piles
   });
   // The issue's bound for the pile is 1e-3 m; this is a tenth of it, so that it also catches a
   // return to a single projection pass per step (5.5e-4 m here). Reached: 9.8e-7 m in the last
@@ -134,7 +134,7 @@ TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, u
 TEST_CASE("time stepping: the same scene gives bit-identical trajectories", "[contact][time_stepping]") {
   auto edit = [](Scene& s) {
     timeStepping(s);
-    s.simulation.pivoting_max_rows = 0;
+    s.simulation.step.contact.max_direct_rows = 0;
   };
   auto one = runScene("pile", 0.5, {}, 1000000, edit);
   auto two = runScene("pile", 0.5, {}, 1000000, edit);

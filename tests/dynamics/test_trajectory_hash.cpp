@@ -17,7 +17,7 @@
 #include <string>
 
 #include "dynamics/simulator.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
 
@@ -67,8 +67,8 @@ const GoldenRun kRuns[] = {
 
 std::uint64_t simulateAndHash(const GoldenRun& run) {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + run.scene + ".json");
-  if (std::string(run.model) == "baraff") scene.simulation.contact_model = ContactModel::Baraff;
-  if (std::string(run.model) == "time_stepping") scene.simulation.contact_model = ContactModel::TimeStepping;
+  if (std::string(run.model) == "baraff") scene.simulation.step.model = ContactModel::Baraff;
+  if (std::string(run.model) == "time_stepping") scene.simulation.step.model = ContactModel::TimeStepping;
   setDuration(scene, run.seconds);
   BuiltWorld built = buildWorld(scene);
   Simulator sim(std::move(built.world), {built.step, scene.simulation.steps_per_frame, scene.render.frames});

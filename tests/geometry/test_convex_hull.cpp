@@ -146,7 +146,7 @@ TEST_CASE("containsAll rejects a point outside", "[hull]") {
   CHECK_FALSE(containsAll(box, {{0, 0, 3.001}}));
 }
 
-// Timings are reported, not asserted (DESIGN.md: numbers come from benchmarks, never from
+// Timings are reported, not asserted (numbers come from benchmarks, never from
 // timed tests). Run with: test_geometry "[.timing]"
 TEST_CASE("hull timings", "[.timing]") {
   using Clock = std::chrono::steady_clock;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 
 namespace tumble::hard {
@@ -12,7 +12,7 @@ Scene loadHardScene(const std::string& name) {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/hard/" + name + ".json");
   // The hard cases hold the contact solve to their thresholds: sleeping, which would freeze
   // whatever it reached, is off unless a test turns it on.
-  scene.simulation.sleep = false;
+  scene.simulation.step.sleep.enabled = false;
   return scene;
 }
 

@@ -7,7 +7,7 @@
 
 #include "dynamics/pipeline.h"
 #include "dynamics/world.h"
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "scene/scene.h"
 
 namespace tumble::hard {

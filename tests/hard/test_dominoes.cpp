@@ -19,7 +19,7 @@ constexpr double kSpacing = 0.1, kFallenDeg = 30;
 // The time each domino's tilt passes 30 deg, interpolated linearly within the step (-1: never).
 std::vector<double> fallTimes(int dt_divisor) {
   Scene scene = hard::loadHardScene("dominoes");
-  scene.simulation.dt_s /= dt_divisor;
+  scene.simulation.step.dt /= dt_divisor;
   scene.simulation.steps_per_frame *= dt_divisor;
   BuiltWorld start = buildWorld(scene);
   std::vector<double> fell(kDominoes, -1), previous(kDominoes, 0);

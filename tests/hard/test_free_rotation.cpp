@@ -27,7 +27,7 @@ struct SpinOutcome {
 };
 
 SpinOutcome runSpin(Scene scene, double seconds, int spun_rank, Integrator integrator) {
-  scene.simulation.integrator = integrator;
+  scene.simulation.step.integrator = integrator;
   SpinOutcome out;
   double e0 = -1, l0 = 0, prev_rate = 0;
   Eigen::Vector3d axis0;

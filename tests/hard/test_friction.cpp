@@ -38,7 +38,7 @@ TEST_CASE("incline tan 0.5: mu = 0.51 sticks, creep below 1e-4 m in 25 s", "[har
 // (analytic 0.76453 s, within one step), slides 1.1468 m (1.14679 m), no spin.
 TEST_CASE("sliding block: stops at v0/(mu g) after v0^2/(2 mu g), never spinning", "[hard][friction]") {
   Scene scene = hard::loadHardScene("sliding_block");
-  const double v0 = 3, mu = 0.4, dt = scene.simulation.dt_s;
+  const double v0 = 3, mu = 0.4, dt = scene.simulation.step.dt;
   double stop_time = -1, max_spin_z = 0, max_spin = 0;
   hard::HardRun run = hard::simulate(scene, 2, [&](const World& w) {
     const RigidBody& cube = w.bodies[1];

@@ -8,7 +8,7 @@
 
 #include "collision/narrow_phase.h"
 #include "dynamics/contact_detection.h"
-#include "dynamics/contact_solver.h"
+#include "dynamics/baraff/collisions.h"
 #include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
 #include "geometry/primitives.h"

@@ -8,8 +8,8 @@
 #include <random>
 
 #include "dynamics/contact_detection.h"
-#include "dynamics/contact_lcp.h"
-#include "dynamics/contact_solver.h"
+#include "dynamics/contact_rows.h"
+#include "dynamics/baraff/resting_forces.h"
 #include "hard_run.h"
 
 using namespace tumble;
@@ -63,7 +63,8 @@ RestOutcome solveRest(const World& world, const std::vector<Contact>& contacts) 
   // The pipeline's stage: gravity plus the resting forces it adds must leave the body at rest.
   std::vector<Wrench> wrenches(world.bodies.size());
   wrenches[1].force = body.mass * world.gravity;
-  addRestingForces(world, contacts, ContactSettings{}, wrenches, stats);
+  const ContactSettings settings;
+  addRestingForces(contacts, {world, settings, 0, nullptr, wrenches, stats});
   double size = 0;
   for (const Eigen::Vector3d& v : body.pieces[0].vertices) size = std::max(size, v.norm());
   Eigen::Vector3d a = wrenches[1].force * body.inv_mass;

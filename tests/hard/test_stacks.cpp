@@ -20,7 +20,7 @@ struct StackOutcome {
 
 StackOutcome runStack(const std::string& name, double seconds, ContactModel model = ContactModel::Baraff) {
   Scene scene = hard::loadHardScene(name);
-  scene.simulation.contact_model = model;
+  scene.simulation.step.model = model;
   BuiltWorld start = buildWorld(scene);
   StackOutcome out;
   double mass = 0, top = 0;
@@ -67,7 +67,7 @@ TEST_CASE("pyramid of 55: stands 60 s without drift, tilt or jitter", "[hard][st
   checkStack(runStack("pyramid55", 60));
 }
 
-// The time-stepping model (simulation.contact_model = "time_stepping") holds both for the issue's
+// The time-stepping model (simulation.step.model = "time_stepping") holds both for the issue's
 // full 60 s: Gauss-Seidel warm-started from the last step's impulses converges on the pyramid's
 // 660 rows (as the Baraff model's large islands now do too),
 // and the stack's 240 rows are pivoted when Gauss-Seidel leaves them unconverged. About 12 s of

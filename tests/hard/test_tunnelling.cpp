@@ -10,7 +10,7 @@
 
 #include <random>
 
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 #include "hard_run.h"
 
 using namespace tumble;

@@ -1,4 +1,4 @@
-// Not a test (DESIGN.md: numbers are measured by benchmarks, never by timed tests): µs per solve of
+// Not a test (numbers are measured by benchmarks, never by timed tests): µs per solve of
 // solveDantzig against solvePgs on stack-of-cubes problems (4 corner contacts per interface; with
 // friction 2 signed tangents per contact) and on a random 400-variable PD problem. CSV on stdout.
 #include "contact_jacobian.h"

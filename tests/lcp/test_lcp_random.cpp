@@ -1,5 +1,5 @@
-// The solvers against the enumeration oracle on random small LCPs (STYLE.md §8: "the LCP solver
-// against enumeration"): A PD and PSD (some rank-deficient), n = 1..8, fixed seeds.
+// The solvers against the enumeration oracle on random small LCPs (every complementary set of a
+// small LCP tried, so the answer is known): A PD and PSD (some rank-deficient), n = 1..8, fixed seeds.
 #include "dynamics/lcp/dantzig_solver.h"
 #include "dynamics/lcp/lcp_enumeration.h"
 #include "dynamics/lcp/pgs_solver.h"

@@ -44,7 +44,7 @@ TEST_CASE("a minimal scene loads with the documented defaults", "[scene]") {
   CHECK(s.simulation.gravity_m_s2.z() == -9.81);
   CHECK(s.render.fps == 30);
   CHECK(s.simulation.steps_per_frame == 8);
-  CHECK(s.simulation.dt_s == 1.0 / 30 / 8);
+  CHECK(s.simulation.step.dt == 1.0 / 30 / 8);
   CHECK(s.lighting.directional.size() == 1);
 }
 
@@ -80,7 +80,7 @@ TEST_CASE("dt_s must divide the frame interval, and the exact step is interval /
   Scene s = parseScene(R"({"schema_version": 1, "simulation": {"dt_s": 0.0041667},
     "render": {"fps": 24}, "bodies": [{"shape": "box"}]})", "scenes/test.json");
   CHECK(s.simulation.steps_per_frame == 10);
-  CHECK(s.simulation.dt_s == 1.0 / 24 / 10);
+  CHECK(s.simulation.step.dt == 1.0 / 24 / 10);
   Outcome bad = tryParse(R"({"schema_version": 1, "simulation": {"dt_s": 0.013},
     "bodies": [{"shape": "box"}]})");
   CHECK(bad.code == ExitCode::BadInput);
@@ -90,9 +90,9 @@ TEST_CASE("dt_s must divide the frame interval, and the exact step is interval /
 TEST_CASE("the contact time search and tolerance are scene settings", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "simulation": {"time_of_impact": "regula_falsi",
     "contact_tolerance_m": 1e-5}, "bodies": [{"shape": "box"}]})", "scenes/test.json");
-  CHECK(s.simulation.regula_falsi);
-  CHECK(s.simulation.contact_tolerance_m == 1e-5);
-  CHECK_FALSE(parseScene(kMinimal, "scenes/test.json").simulation.regula_falsi);
+  CHECK(s.simulation.step.contact.regula_falsi);
+  CHECK(s.simulation.step.contact.tolerance_m == 1e-5);
+  CHECK_FALSE(parseScene(kMinimal, "scenes/test.json").simulation.step.contact.regula_falsi);
 }
 
 TEST_CASE("duration_s sets the frame count", "[scene]") {

@@ -13,7 +13,7 @@ TEST_CASE("an --fps override keeps dt close and keeps the duration", "[scene]") 
   setFrameRate(s, 60);
   CHECK(s.render.frames == 120);
   CHECK(s.simulation.steps_per_frame == 4);
-  CHECK(s.simulation.dt_s == 1.0 / 240);
+  CHECK(s.simulation.step.dt == 1.0 / 240);
 }
 
 TEST_CASE("a --dt that does not divide the frame interval is a usage error", "[scene]") {
@@ -22,7 +22,7 @@ TEST_CASE("a --dt that does not divide the frame interval is a usage error", "[s
   CHECK_THROWS_AS(setTimeStep(s, 0.001, "--dt"), Error);
   setTimeStep(s, 1.0 / 300, "--dt");
   CHECK(s.simulation.steps_per_frame == 10);
-  CHECK(s.simulation.dt_s == 1.0 / 30 / 10);
+  CHECK(s.simulation.step.dt == 1.0 / 30 / 10);
 }
 
 TEST_CASE("the --size override takes WIDTHxHEIGHT within limits", "[scene]") {

@@ -2,7 +2,7 @@
 // enter (a row appended: O(k²)) and leave (rows shifted and a rank-1 update: O(k²)) instead of a
 // refactorisation per pivot (O(k³)).
 //
-// The factor doubles as the rank test that keeps redundant contacts out of C (seed 002: four
+// The factor doubles as the rank test that keeps redundant contacts out of C (Baraff 1994: four
 // coplanar points with one normal make A singular). Appending variable j computes
 //   y = L⁻¹ A_Cj,   s_j = A_jj − yᵀy,
 // and s_j is the Schur complement of A_CC in A_{C+j,C+j}. With A = J M⁻¹ Jᵀ it equals the squared

@@ -1,5 +1,5 @@
 // The default LCP solver: a direct principal-pivoting method (Cottle–Dantzig; Baraff, "Fast contact
-// force computation for nonpenetrating rigid bodies", 1994 — the "fast solver" of seed 002) for the
+// force computation for nonpenetrating rigid bodies", 1994, the "fast solver") for the
 // boxed problem of lcp_problem.h, with ODE's friction-dependent bounds. Its answer is exact to
 // rounding: every clamped variable satisfies w_i = 0 through a Cholesky solve, not an iteration.
 #pragma once
@@ -14,7 +14,7 @@ struct DantzigSettings {
   // LcpStatus::MaxIterations instead of a hang.
   int max_pivots_per_variable = 16;
   // Relative Schur complement below which a variable counts as a linear combination of the clamped
-  // set (a redundant contact, seed 002) and is kept out of it: s_j ≤ tol·A_jj, i.e. the part of its
+  // set (a redundant contact) and is kept out of it: s_j ≤ tol·A_jj, i.e. the part of its
   // Jacobian row outside the clamped rows is below sqrt(tol) ≈ 3e-5 of its length. Rounding in s_j
   // is about cond(A_CC)·1e-16, so this leaves room for clamped sets with cond up to ~1e6.
   double dependence_tolerance = 1e-9;

@@ -6,8 +6,8 @@
 //     lo_i < f_i < hi_i  and  w_i = 0 (clamped: the constraint holds with equality)
 //
 // With lo = 0 and hi = +inf this is the plain LCP  w ≥ 0, f ≥ 0, wᵀf = 0  of Baraff's resting
-// contact (seed 002, conditions I–III; seed 001 "the resting-contact QP"). Friction follows ODE's
-// "findex" convention (seed 003, friction cones): if friction_of[i] = k ≥ 0 the bounds of variable i
+// contact (Baraff 1994, conditions I–III; Baraff, "Collision and Contact", course notes: "the resting-contact QP"). Friction follows ODE's
+// "findex" convention (Xiang, "Robot Control and Physical Simulation", 2020: friction cones): if friction_of[i] = k ≥ 0 the bounds of variable i
 // are not lo_i, hi_i but ±mu_i·f_k, where variable k is the normal force of the same contact.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Projected Gauss–Seidel for the boxed LCP of lcp_problem.h (seed 003: "physical simulators
+// Projected Gauss–Seidel for the boxed LCP of lcp_problem.h (Xiang, "Robot Control and Physical Simulation", 2020: "physical simulators
 // typically use projected Gauss-Seidel" for mixed LCPs): the cheap, approximate alternative to
 // solveDantzig. Each sweep visits i = 0..n−1 in index order (deterministic) and sets
 //   f_i ← mid(lo_i, f_i − ω·w_i / A_ii, hi_i),   w_i = A_i· f + b_i with the latest f,

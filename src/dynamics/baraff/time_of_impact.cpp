@@ -1,4 +1,4 @@
-#include "dynamics/time_of_impact.h"
+#include "dynamics/baraff/time_of_impact.h"
 
 #include <cmath>
 

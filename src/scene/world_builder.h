@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/step_settings.h"
+#include "dynamics/settings.h"
 #include "dynamics/world.h"
 #include "scene/scene.h"
 

@@ -1,6 +1,6 @@
-// Contact pipeline step 3 (DESIGN.md): when a step ends with bodies deeper in each other than the
+// Back-stepping (docs/architecture.md): when a step ends with bodies deeper in each other than the
 // tolerance, find the first time within the step at which they touch, by bisection on the step
-// length (seed 000, "bisection back-stepping"), or by regula falsi (Illinois variant) as an option.
+// length (Yang, "Rigid Bodies and Contacts", 2020: "bisection back-stepping"), or by regula falsi (Illinois variant) as an option.
 #pragma once
 
 #include <functional>

@@ -1,11 +1,11 @@
-#include "dynamics/impulse_propagation.h"
+#include "dynamics/baraff/impulse_propagation.h"
 
 #include <Eigen/QR>
 #include <algorithm>
 #include <limits>
 
 #include "dynamics/contact_jacobian.h"
-#include "dynamics/contact_lcp.h"
+#include "dynamics/contact_rows.h"
 
 namespace tumble {
 namespace {
@@ -91,25 +91,26 @@ void newtonImpact(World& world, const std::vector<const Contact*>& points, const
 // dies out by a constant factor per landing, but it never ends: as the lift-offs shrink to the
 // contact tolerance, each landing found within the tolerance starts the next, and a box on its
 // face chattered for ever at about 5 mrad/s. When no point approached faster than `settle_below`
-// (m/s; propagateImpulses uses settleSpeed, contact_solver.h), no touching point may leave faster than it did before the impact: the
+// (m/s; propagateImpulses uses settleSpeed, contact_solve_common.h), no touching point may leave faster than it did before the impact: the
 // normal velocities are set to max(v-, 0) by the least-norm normal impulses that do it. Kept only
 // if it adds no energy and leaves nothing approaching.
 void settleSlowImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
                       double settle_below) {
   const double slack = 1e-3 * settle_below;   // a lift-off or approach slower than this is none
   double fastest = 0, lifted = 0;
-  std::vector<ContactRow> rows;
+  ContactRows normals;   // one normal row per point
   Eigen::VectorXd change(static_cast<Eigen::Index>(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     fastest = std::min(fastest, vn[i]);
-    rows.push_back(rowAlong(world, *points[i], points[i]->normal));
-    const double now = rowVelocity(world, rows.back()), target = std::max(vn[i], 0.0);
+    normals.addContact(world, *points[i], false);
+    const double now = rowVelocity(world, normals.rows.back()), target = std::max(vn[i], 0.0);
     change[static_cast<Eigen::Index>(i)] = target - now;
     lifted = std::max(lifted, now - target);
   }
   if (fastest < -settle_below || lifted <= slack) return;
   Momenta before(world, points);
   const double energy = before.energy(world);
+  const std::vector<ContactRow>& rows = normals.rows;
   const Eigen::VectorXd f = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(delassus(world, rows)).solve(change);
   if (!f.allFinite()) return;
   applyAlongRows(world, rows, f);

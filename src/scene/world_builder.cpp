@@ -1,4 +1,4 @@
-#include "dynamics/world_builder.h"
+#include "scene/world_builder.h"
 
 #include <cstdio>
 
@@ -95,7 +95,7 @@ std::string metres(double x) {
 void reportStartOverlaps(const Scene& scene, BuiltWorld& built) {
   const std::vector<RigidBody>& bodies = built.world.bodies;
   for (const StartOverlap& o :
-       findStartOverlaps(built.world, scene.simulation.contact_tolerance_m, FaultSettings{}.depth_share)) {
+       findStartOverlaps(built.world, scene.simulation.step.contact.tolerance_m, FaultSettings{}.depth_share)) {
     int placed = bodies[o.b].is_static ? o.a : o.b, other = placed == o.b ? o.a : o.b;
     std::string placed_name = "\"" + bodies[placed].name + "\"", other_name = "\"" + bodies[other].name + "\"";
     if (o.tooDeep())
@@ -114,15 +114,7 @@ void reportStartOverlaps(const Scene& scene, BuiltWorld& built) {
 BuiltWorld buildWorld(const Scene& scene) {
   BuiltWorld out;
   out.world.gravity = scene.simulation.gravity_m_s2;
-  out.step.dt = scene.simulation.dt_s;
-  out.step.integrator = scene.simulation.integrator;
-  out.step.contact.regula_falsi = scene.simulation.regula_falsi;
-  out.step.contact.max_direct_rows = scene.simulation.pivoting_max_rows;
-  out.step.contact.tolerance_m = scene.simulation.contact_tolerance_m;
-  out.step.model = scene.simulation.contact_model;
-  out.step.time_stepping_sweeps = scene.simulation.time_stepping_sweeps;
-  out.step.sleep = {scene.simulation.sleep, scene.simulation.sleep_speed_m_s, scene.simulation.sleep_spin_rad_s,
-                    scene.simulation.sleep_after_s};
+  out.step = scene.simulation.step;
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
   reportStartOverlaps(scene, out);

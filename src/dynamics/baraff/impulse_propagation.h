@@ -1,4 +1,4 @@
-// Colliding contacts (DESIGN.md, contact pipeline step 5): Newton's restitution impulses that
+// Colliding contacts (docs/architecture.md, collide): Newton's restitution impulses that
 // propagate through chains of contact, pair by pair, while the points of one body pair are always
 // solved together.
 //
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "dynamics/contact.h"
-#include "dynamics/contact_solver.h"
+#include "dynamics/contact_solve_common.h"
 #include "dynamics/world.h"
 
 namespace tumble {

@@ -1,0 +1,107 @@
+#include "dynamics/baraff/baraff_model.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "dynamics/baraff/collisions.h"
+#include "dynamics/baraff/drift_correction.h"
+#include "dynamics/contact_rows.h"
+#include "dynamics/gravity.h"
+
+namespace tumble {
+
+void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  const double start_time = world.time;
+  const double done = tuning::kStepRemainder * settings.dt;
+  double remaining = settings.dt;
+  for (int i = 0; i < tuning::kMaxSubsteps && remaining > done; ++i) {
+    world.time = start_time + (settings.dt - remaining);
+    remaining -= substep(world, settings, shared, remaining);
+  }
+  if (remaining > done) ++shared.counters.stuck_substeps;
+  world.time = start_time + settings.dt;
+}
+
+double BaraffModel::substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining) {
+  PipelineCounters& counters = shared.counters;
+  ++counters.substeps;
+  auto detect = [&] { shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs); };
+  if (shared.has_contacts && !shared.contacts_fresh) shared.timed(Detect, detect);
+  if (shared.has_contacts) shared.wakeTouched(world, detect);
+  if (shared.has_contacts) {
+    bool hit = false;
+    const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
+    shared.timed(Collide, [&] {
+      hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, counters.contacts);
+    });
+    if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
+  }
+  shared.timed(Forces, [&] {
+    if (shared.apply_gravity) applyGravity(world, shared.wrenches);
+    else for (Wrench& w : shared.wrenches) w = Wrench{};
+  });
+  if (shared.has_contacts)
+    shared.timed(Resting, [&] {
+      addRestingForces(shared.contacts, {world, settings.contact, settings.dt, &resting_memory_, shared.wrenches,
+                                         counters.contacts});
+    });
+
+  const double h = shared.has_contacts
+                       ? std::min(remaining, tunnelling_.limit(world, shared.wrenches, shared.body_radius,
+                                                               shared.min_thickness, shared.detector, remaining))
+                       : remaining;
+  StepSettings sub = settings;
+  sub.dt = h;
+  if (shared.has_contacts) {
+    start_state_.save(world);
+    // Which touching points are lifting off as the sub-step starts (after the impulses): if one
+    // ends the sub-step too deep it has come down again, a landing that back-stepping must find.
+    lifting_.resize(shared.contacts.size());
+    for (std::size_t i = 0; i < shared.contacts.size(); ++i)
+      lifting_[i] = normalVelocity(world, shared.contacts[i]) > settings.contact.resting_speed_m_s;
+  }
+  shared.timed(Integrate, [&] { integrate(world, shared.wrenches, sub); });
+  if (!shared.has_contacts) return h;
+
+  shared.timed(Detect, [&] { shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_); });
+  double taken = h;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const Contact& c : contacts_end_) deepest = std::max(deepest, c.depth);
+  if (deepest > settings.contact.tolerance_m)
+    shared.timed(BackStep, [&] {
+      taken = back_step_.firstContact(world, settings, h, {contacts_end_, pairs_end_, lifting_, start_state_}, shared);
+    });
+  if (taken == h) {
+    std::swap(shared.contacts, contacts_end_);
+    std::swap(shared.pairs, pairs_end_);
+    shared.contacts_fresh = true;
+  } else {
+    shared.contacts_fresh = false;
+  }
+  shared.timed(Correct, [&] {
+    const int moved = correctPenetration(world, shared.contacts, settings.contact.tolerance_m);
+    counters.projections += moved;
+    if (moved > 0) shared.contacts_fresh = false;
+  });
+  return taken;
+}
+
+std::vector<std::string> BaraffModel::describe(const StepSettings& settings, const SharedStages& shared) const {
+  std::vector<std::string> lines;
+  if (shared.has_contacts) {
+    lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space");
+    lines.push_back("collide     Newton impulses on colliding contacts (LCP on impulses, friction)");
+  }
+  if (shared.apply_gravity) lines.push_back("forces      gravity on " + shared.movingBodies());
+  if (shared.has_contacts) lines.push_back("resting     contact forces: LCP a = A f + b (Dantzig pivoting) + Coulomb friction");
+  lines.push_back(shared.integrateLine(settings));
+  if (shared.has_contacts) {
+    lines.push_back("back-step   bisection to the first contact when a step ends too deep");
+    lines.push_back("correct     position projection of residual penetration");
+  } else {
+    lines.push_back("contacts    none needed: nothing in this scene can touch");
+  }
+  return lines;
+}
+
+}  // namespace tumble

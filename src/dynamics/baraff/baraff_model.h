@@ -1,0 +1,44 @@
+// The event-driven contact model (Baraff 1994; the rigid-body lecture notes of Yang 2020): a step
+// of dt is cut into sub-steps at each first contact, found by back-stepping, and where a body could
+// pass through a piece it may meet (the tunnelling bound). Each sub-step:
+//
+//   detect      broad phase + narrow phase (within the margin)    shared_stages.h
+//   collide     classify; Newton impulses on colliding contacts   collisions.h
+//   forces      gravity                                           gravity.h
+//   resting     contact forces: LCP + Coulomb friction            resting_forces.h
+//   integrate   (x, q, P, L) over the sub-step, cut by the         integrator.h,
+//               tunnelling bound                                   tunnelling_bound.h
+//   detect      the contacts at the end of the sub-step
+//   back-step   bisection to the first contact if it ends too deep back_step.h
+//   correct     project out residual penetration                  drift_correction.h
+#pragma once
+
+#include <vector>
+
+#include "dynamics/baraff/back_step.h"
+#include "dynamics/baraff/resting_forces.h"
+#include "dynamics/baraff/tunnelling_bound.h"
+#include "dynamics/body_snapshot.h"
+#include "dynamics/contact_model.h"
+
+namespace tumble {
+
+class BaraffModel final : public ContactModelStep {
+ public:
+  void step(World& world, const StepSettings& settings, SharedStages& shared) override;
+  std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+
+ private:
+  // One sub-step of at most `remaining` seconds; returns its length.
+  double substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining);
+
+  RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
+  TunnellingBound tunnelling_;
+  BackStepper back_step_;
+  BodySnapshot start_state_;       // the state at the sub-step's start, for back-stepping
+  std::vector<Contact> contacts_end_;
+  std::vector<PiecePair> pairs_end_;
+  std::vector<char> lifting_;      // per contact at the start: separating as the sub-step starts
+};
+
+}  // namespace tumble

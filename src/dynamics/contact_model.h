@@ -1,0 +1,26 @@
+// The one interface every contact model implements. A model owns its step and its state; the
+// Pipeline (pipeline.h) owns what all models share (shared_stages.h) and hands each step to the
+// scene's model. Adding a model means adding a folder beside baraff/ and time_stepping/ and one
+// case to makeContactModel (pipeline.cpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dynamics/settings.h"
+#include "dynamics/shared_stages.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+class ContactModelStep {
+ public:
+  virtual ~ContactModelStep() = default;
+  // Advances `world` by settings.dt, leaving the contacts of its end state in `shared.contacts`
+  // (or `shared.contacts_fresh` false when they must be detected again).
+  virtual void step(World& world, const StepSettings& settings, SharedStages& shared) = 0;
+  // One line per stage this model runs in this scene, in order (for `tumble check`).
+  virtual std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const = 0;
+};
+
+}  // namespace tumble

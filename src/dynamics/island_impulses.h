@@ -1,0 +1,36 @@
+// The velocity-level impulse problem of one island of contacts (Moreau 1988; Stewart and Trinkle
+// 1996), the solve both contact models share: the time-stepping model solves every island this
+// way, the Baraff model its resting islands too large to pivot. With w = A p + b the rows'
+// velocities after the impulses p (b: the velocities without them, less each row's target):
+//
+//   normal rows    w >= 0, p >= 0, w p = 0
+//   tangent rows   w = 0 while |p_t| <= mu p_n (a friction pyramid), else p_t at the bound
+//
+// solved by projected Gauss-Seidel (row_gauss_seidel.h) from a warm start (contact_rows.h).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamics/contact_rows.h"
+
+namespace tumble {
+
+struct IslandImpulseSettings {
+  int max_sweeps = 200;
+  double tolerance = 1e-6;   // of the largest velocity term (row_gauss_seidel.h)
+};
+
+struct IslandImpulses {
+  Eigen::VectorXd p;         // impulse along each row (N s)
+  bool converged = false;
+};
+
+// `rows` holds the island's contacts (`island`) with their friction pyramids (buildContactRows).
+// Counts the island, its sweeps and whether it hit the cap in `stats`.
+IslandImpulses solveIslandImpulses(const World& world, const ContactRows& rows,
+                                   const std::vector<const Contact*>& island, const Eigen::VectorXd& b,
+                                   const Eigen::VectorXd& start, const IslandImpulseSettings& settings,
+                                   ContactSolveStats& stats);
+
+}  // namespace tumble

@@ -1,0 +1,89 @@
+// The one definition of a simulation's settings, with their units: filled by the scene loader
+// (scene/scene_loader.cpp) and by the benchmark, read-only during a step (`const StepSettings&`).
+// Below them, the tunings the solvers use, each named once with the reason for its value.
+// Compare Jolt's PhysicsSettings and MuJoCo's mjOption.
+#pragma once
+
+namespace tumble {
+
+enum class Integrator { SemiImplicitEuler, Rk4 };
+
+// How contacts are handled (one folder each under dynamics/, behind contact_model.h):
+//   Baraff        event-driven: back-step to each first contact, Newton impulses, resting-force LCP
+//   TimeStepping  Moreau / Stewart-Trinkle: one velocity-level impulse problem per step, solved by
+//                 warm-started Gauss-Seidel; no back-stepping (fast, first order in dt)
+enum class ContactModel { Baraff, TimeStepping };
+
+struct ContactSettings {
+  double margin_m = 1e-3;           // m: pairs closer than this are reported by the narrow phase,
+                                    // so contacts exist before they touch (cheap, coherent)
+  double tolerance_m = 1e-6;        // m: |depth| within this is "touching"; a step that ends deeper
+                                    // is bisected back to the first contact
+  double resting_speed_m_s = 1e-3;  // m/s: a touching contact approaching slower than this rests;
+                                    // faster it collides and gets Newton's impulse
+  double sliding_speed_m_s = 1e-5;  // m/s: tangential speed above which friction is dynamic
+  int max_bisections = 60;          // halvings of the step: 2^-60 of dt is far below rounding
+  bool regula_falsi = false;        // bracket by linear interpolation (Illinois) instead of halving
+  // Resting islands up to this many LCP rows (3 per contact) are solved exactly by pivoting
+  // (cost ~ rows^3); larger ones (a pile) by Gauss-Seidel sweeps (cost ~ rows per sweep). 256
+  // keeps a stack of 20 boxes (80 contacts, 240 rows) exact.
+  int max_direct_rows = 256;
+};
+
+struct SleepSettings {
+  // Off unless asked: a scene file asks by default (scene.h, "sleep": true); steps set up by hand
+  // (tests, the benchmark's own engines) say so themselves.
+  bool enabled = false;
+  // Box2D's thresholds (b2_linearSleepTolerance 1 cm/s, b2_angularSleepTolerance 2 deg/s,
+  // b2_timeToSleep 0.5 s): a body this slow moves under 5 mm and turns under 1 deg before it
+  // sleeps. Bullet's defaults (0.8 m/s, 1 rad/s, 2 s) are far coarser.
+  double speed_m_s = 0.01;
+  double spin_rad_s = 0.035;
+  double after_s = 0.5;
+};
+
+struct StepSettings {
+  double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
+  Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
+  ContactSettings contact;                        // detection margin, tolerances, thresholds
+  ContactModel model = ContactModel::Baraff;      // event-driven, or velocity-level time stepping
+  int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
+  SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)
+};
+
+// Tunings: fixed values the solvers use, not scene settings.
+namespace tuning {
+
+// Baraff model: sub-steps per step at most. Sub-steps end at first contacts, a few per step is
+// normal; the cap only stops a contact that back-stepping cannot resolve from hanging the run
+// (counted as a stuck sub-step).
+inline constexpr int kMaxSubsteps = 256;
+// Baraff model: a step is done when less than this share of dt remains.
+inline constexpr double kStepRemainder = 1e-12;
+// Baraff model: a first contact found earlier than this share of the sub-step is "at once": cutting
+// there would stall the step in sub-steps of nothing (back_step.cpp).
+inline constexpr double kImmediateContact = 1e-6;
+// Time-stepping model: drift projection passes per step; each reads the depths the earlier
+// pushes left. One pass cannot keep up under a load (a column of boxes sank 6-8 cm in the pile).
+inline constexpr int kProjectionPasses = 8;
+// Pivoting: passes over the friction bounds at most; the bounds settle to 1e-9 of the largest.
+inline constexpr int kMaxFrictionPasses = 12;
+inline constexpr double kFrictionTolerance = 1e-9;
+// A pivoting answer that stopped short is used if its complementarity residual is within this
+// share of the problem's scale (|b| + 1).
+inline constexpr double kUsableComplementarity = 1e-6;
+// Baraff model, dynamic friction on resting contacts: fixed-point passes on the normal forces at
+// most, and the relative change at which they have settled.
+inline constexpr int kMaxDynamicFrictionPasses = 8;
+inline constexpr double kDynamicFrictionSettled = 1e-12;
+// Velocity-level Gauss-Seidel: convergence, as a share of the largest velocity term, for islands
+// kept at the Gauss-Seidel answer (a pile), and for small ones that are pivoted if it falls short
+// (a flat landing solved only to 1e-6 leaves its four corners unequal: the cube spins at 3e-4 rad/s).
+inline constexpr double kImpulseTolerance = 1e-6;
+inline constexpr double kSmallIslandTolerance = 1e-12;
+// Time-stepping model: sweeps before a small island is pivoted instead (pivoting a small island
+// costs about as much as 30 sweeps over it).
+inline constexpr int kSmallIslandSweeps = 30;
+
+}  // namespace tuning
+}  // namespace tumble

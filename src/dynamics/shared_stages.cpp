@@ -1,0 +1,48 @@
+#include "dynamics/shared_stages.h"
+
+#include <algorithm>
+
+namespace tumble {
+namespace {
+
+const char* kStageNames[] = {"detect", "collide", "forces", "resting", "integrate", "back-step", "correct", "sleep"};
+static_assert(sizeof kStageNames / sizeof kStageNames[0] == StageCount);
+
+int countMoving(const World& world) {
+  int n = 0;
+  for (const RigidBody& b : world.bodies) n += b.is_static ? 0 : 1;
+  return n;
+}
+
+}  // namespace
+
+SharedStages::SharedStages(const World& world)
+    : apply_gravity(world.gravity.squaredNorm() > 0),
+      moving(countMoving(world)),
+      fixed(static_cast<int>(world.bodies.size()) - moving),
+      detector(world),
+      has_contacts(detector.hasCollidablePairs()),
+      min_thickness(detector.thinnestPiece()),
+      sleep(world),
+      wrenches(world.bodies.size()) {
+  for (const RigidBody& body : world.bodies) {
+    double radius = 0;
+    for (const ConvexPiece& piece : body.pieces) {
+      for (const Eigen::Vector3d& v : piece.vertices) radius = std::max(radius, v.norm());
+    }
+    body_radius.push_back(radius);
+  }
+  for (const char* name : kStageNames) profile.push_back({name});
+}
+
+std::string SharedStages::movingBodies() const {
+  return std::to_string(moving) + (moving == 1 ? " moving body" : " moving bodies");
+}
+
+std::string SharedStages::integrateLine(const StepSettings& settings) const {
+  return std::string("integrate   ") + (settings.integrator == Integrator::Rk4 ? "RK4" : "semi-implicit Euler") +
+         ", dt = " + std::to_string(settings.dt) + " s, " + movingBodies() + "; " + std::to_string(fixed) +
+         " static never integrated";
+}
+
+}  // namespace tumble

@@ -1,0 +1,77 @@
+// What every contact model's step shares, owned by the Pipeline: detection and the contacts it
+// found, the applied forces, waking sleepers that are touched, the stage profile and the counters.
+// A model reads and writes these; everything else it keeps in its own state.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "dynamics/contact_detection.h"
+#include "dynamics/contact_solve_common.h"
+#include "dynamics/integrator.h"
+#include "dynamics/settings.h"
+#include "dynamics/sleeping.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+// The stages a step may run, in the order the profile lists them.
+enum Stage { Detect, Collide, Forces, Resting, Integrate, BackStep, Correct, Sleep, StageCount };
+
+// Wall time per stage, summed over the steps taken (for -v and benchmarks).
+struct StageTime {
+  std::string name;
+  double seconds = 0;
+};
+
+struct PipelineCounters {
+  long substeps = 0, back_steps = 0, bisection_evaluations = 0, stuck_substeps = 0;
+  long projections = 0;
+  long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
+  ContactSolveStats contacts;
+  std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
+};
+
+struct SharedStages {
+  explicit SharedStages(const World& world);
+
+  template <typename F> void timed(Stage stage, F&& work) {
+    auto start = std::chrono::steady_clock::now();
+    work();
+    profile[stage].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  // Wakes sleeping islands that `contacts` shows touched by awake bodies, and calls `detect` (the
+  // model's detection into `contacts`) again until none is: a solve never meets a sleeper.
+  template <typename F> void wakeTouched(World& world, F&& detect) {
+    if (sleep.counters().asleep_now == 0) return;
+    bool woke = false;
+    timed(Sleep, [&] { woke = sleep.wakeTouched(world, contacts, detector); });
+    while (woke) {
+      timed(Detect, detect);   // the woken bodies can move now
+      timed(Sleep, [&] { woke = sleep.wakeTouched(world, contacts, detector); });
+    }
+  }
+
+  // "12 moving bodies", and the integrate stage's line, for `tumble check`.
+  std::string movingBodies() const;
+  std::string integrateLine(const StepSettings& settings) const;
+
+  const bool apply_gravity;     // the world has gravity: a force stage runs
+  const int moving, fixed;      // bodies that move; static ones, never integrated
+  ContactDetector detector;
+  const bool has_contacts;      // something can touch: the contact stages run
+  const double min_thickness;   // m: the thinnest piece of any body
+  std::vector<double> body_radius;   // m: each body's farthest vertex from its centre of mass
+  SleepKeeper sleep;
+
+  std::vector<Contact> contacts;     // the world's contacts now (for overlays and the fault check)
+  std::vector<PiecePair> pairs;      // the piece pair of each contact
+  bool contacts_fresh = false;       // `contacts` hold the present state: no detection needed
+  std::vector<Wrench> wrenches;      // applied forces of the (sub-)step, per body
+
+  std::vector<StageTime> profile;
+  PipelineCounters counters;
+};
+
+}  // namespace tumble

@@ -1,0 +1,97 @@
+#include "dynamics/time_stepping/contact_impulses.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/contact_islands.h"
+#include "dynamics/contact_rows.h"
+#include "dynamics/island_impulses.h"
+
+namespace tumble {
+
+void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
+                            const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats) {
+  const double dt = settings.dt;
+  const std::size_t m = contacts.size();
+  std::vector<const ImpulseRecord*> last(m);
+  std::vector<double> want(m), owed(m, 0);   // normal velocity target; landing speed carried in
+  std::vector<const Contact*> all(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Contact& c = contacts[i];
+    all[i] = &c;
+    last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
+    owed[i] = last[i] ? last[i]->landing_speed : 0;
+    const double gap = -c.depth;
+    want[i] = -std::max(gap, 0.0) / dt;
+    const double u = std::max(approach[i], owed[i]);
+    if (gap <= settings.contact.tolerance_m && u > min_bounce_speed) want[i] = std::max(want[i], c.restitution * u);
+  }
+  stats.resting += static_cast<long>(m);
+
+  std::vector<Eigen::Vector3d> impulse(m, Eigen::Vector3d::Zero());   // on B, world axes
+  std::vector<double> normal_impulse(m, 0);
+  // Each body's velocity once (the rows need it twice each; computing omega costs a rotation).
+  velocity_.resize(world.bodies.size());
+  spin_.resize(world.bodies.size());
+  for (std::size_t k = 0; k < world.bodies.size(); ++k) {
+    const RigidBody& body = world.bodies[k];
+    velocity_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.velocity();
+    spin_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.angularVelocity();
+  }
+  auto rowVelocityNow = [&](const ContactRow& r) {
+    return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
+  };
+  // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
+  // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
+  std::vector<const ImpulseRecord*> island_last;
+  for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
+    // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
+    // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
+    // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
+    // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
+    const ContactRows rows = buildContactRows(world, island);
+    const int n = rows.size();
+    island_last.assign(island.size(), nullptr);
+    Eigen::VectorXd b(n);
+    for (int r = 0; r < n; ++r) b[r] = rowVelocityNow(rows.rows[r]);
+    for (std::size_t k = 0; k < island.size(); ++k) {
+      const std::size_t i = static_cast<std::size_t>(island[k] - contacts.data());
+      b[rows.normal_row[k]] -= want[i];
+      island_last[k] = last[i];
+    }
+    // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
+    const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
+    IslandImpulseSettings gs;
+    gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
+                          : settings.time_stepping_sweeps;
+    gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
+    IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, stats);
+    Eigen::VectorXd f = std::move(solved.p);
+    if (!solved.converged && small) {
+      ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
+      exact.problem.b = b;
+      lcp::LcpResult r = solveContactLcp(exact.problem, stats);
+      if (usableLcpAnswer(r, exact.problem)) f = r.f;
+      else ++stats.iterative_fallbacks;
+    }
+    applyAlongRows(world, rows.rows, f);
+    const std::vector<Eigen::Vector3d> island_impulse = impulsePerContact(rows, f, 1.0);
+    for (std::size_t k = 0; k < island.size(); ++k) {
+      const std::size_t i = static_cast<std::size_t>(island[k] - contacts.data());
+      impulse[i] += island_impulse[k];
+      normal_impulse[i] = f[rows.normal_row[k]];
+    }
+  }
+
+  std::vector<ImpulseRecord> records(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const Contact& c = contacts[i];
+    records[i] = impulseRecord(world, c, impulse[i]);
+    // A landing the margin closed this step (pushed, not yet touching) is owed its bounce.
+    const bool landing = -c.depth > settings.contact.tolerance_m && normal_impulse[i] > 0;
+    records[i].landing_speed = landing ? std::max(approach[i], owed[i]) : 0;
+  }
+  memory_.replace(std::move(records));
+}
+
+}  // namespace tumble

@@ -1,0 +1,46 @@
+// The contact impulses of the time-stepping model (Moreau 1988; Stewart and Trinkle 1996; the
+// non-smooth time stepping of the contact-mechanics literature; projected Gauss-Seidel with
+// friction as in Xiang's "Robot Control and Physical Simulation", 2020): one velocity-level
+// impulse problem per step instead of going back to each first contact. For each contact with gap
+// phi = -depth (contacts are found within a speculative margin, so phi > 0 for pairs about to
+// touch):
+//
+//   normal    v_n+ >= -max(phi, 0) / dt     a gap may close within the step, never overshoot;
+//             v_n+ >= e u                   a touching contact that approached at u bounces
+//   friction  two tangent rows, |p_t| <= mu p_n each (a friction pyramid), v_t+ = 0 while inside
+//
+// solved island by island (island_impulses.h) warm-started from the last step's impulses
+// (impulse_memory.h). Penetration is not pushed apart by velocity (Baumgarte adds energy): the
+// model projects positions instead (drift_projection.h).
+//
+// Restitution with a speculative margin: a landing whose gap closes during the step arrives at
+// phi = 0 with the small speed that just closes it; its approach speed u is remembered and the
+// bounce e u is given the next step, when the contact touches. The bounce is therefore one step
+// late (first order in dt), as every quantity of this model is.
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact.h"
+#include "dynamics/contact_solve_common.h"
+#include "dynamics/impulse_memory.h"
+#include "dynamics/settings.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+class ContactImpulses {
+ public:
+  // Applies this step's contact impulses to the momenta of `world`, whose velocities already hold
+  // the step's applied impulses (gravity). `approach` is each contact's normal approach speed
+  // (m/s, > 0 closing) before those, the speed a bounce reverses. Impacts slower than
+  // `min_bounce_speed` get no restitution (contact_solve_common.h).
+  void apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
+             const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats);
+
+ private:
+  ImpulseMemory memory_;
+  std::vector<Eigen::Vector3d> velocity_, spin_;   // per body, this step (reused buffers)
+};
+
+}  // namespace tumble

@@ -1,0 +1,63 @@
+#include "dynamics/time_stepping/time_stepping_model.h"
+
+#include "dynamics/contact_rows.h"
+#include "dynamics/gravity.h"
+
+namespace tumble {
+
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach) {
+  reach.assign(world.bodies.size(), 0.0);
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& b = world.bodies[i];
+    if (b.is_static) continue;
+    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
+  }
+}
+
+void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  ++shared.counters.substeps;
+  const double dt = settings.dt;
+  if (shared.has_contacts) {
+    auto detect = [&] {
+      bodyReach(world, shared.body_radius, dt, reach_);
+      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_);
+    };
+    shared.timed(Detect, detect);
+    shared.wakeTouched(world, detect);
+    shared.timed(Correct, [&] {
+      shared.counters.projections += projection_.project(world, shared.contacts, settings.contact.tolerance_m);
+    });
+  }
+  // Approach speeds before gravity's impulse: the speed an impact reverses.
+  approach_.resize(shared.contacts.size());
+  for (std::size_t i = 0; i < shared.contacts.size(); ++i) approach_[i] = -normalVelocity(world, shared.contacts[i]);
+  shared.timed(Forces, [&] {
+    if (shared.apply_gravity) applyGravityImpulse(world, dt);
+  });
+  if (shared.has_contacts) {
+    const double min_bounce = minBounceSpeed(world, settings.contact, dt);
+    shared.timed(Resting, [&] {
+      impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
+    });
+  }
+  for (Wrench& w : shared.wrenches) w = Wrench{};
+  shared.timed(Integrate, [&] { integrate(world, shared.wrenches, settings); });
+}
+
+std::vector<std::string> TimeSteppingModel::describe(const StepSettings& settings, const SharedStages& shared) const {
+  std::vector<std::string> lines;
+  if (shared.has_contacts) {
+    lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space, "
+                    "within a speculative margin (how far bodies can close in a step)");
+    lines.push_back("correct     position projection of residual penetration");
+  }
+  if (shared.apply_gravity) lines.push_back("forces      gravity impulse on " + shared.movingBodies());
+  if (shared.has_contacts)
+    lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
+                    "warm-started Gauss-Seidel; small islands it leaves unconverged pivoted exactly");
+  lines.push_back(shared.integrateLine(settings) + " (free motion with the new momenta)");
+  if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
+  return lines;
+}
+
+}  // namespace tumble

@@ -1,0 +1,37 @@
+// The time-stepping contact model (Moreau 1988; Stewart and Trinkle 1996): one velocity-level
+// impulse problem per step, never cut. Symplectic Euler in the momenta. A step:
+//
+//   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
+//   correct     project out residual penetration                          drift_projection.h
+//   forces      gravity as an impulse                                     gravity.h
+//   resting     the contact impulses (restitution, friction pyramid)      contact_impulses.h
+//   integrate   free motion of every body over dt with its new momenta    integrator.h
+//               (the scene's integrator turns the bodies, gyroscopic term included)
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact_model.h"
+#include "dynamics/time_stepping/contact_impulses.h"
+#include "dynamics/time_stepping/drift_projection.h"
+
+namespace tumble {
+
+class TimeSteppingModel final : public ContactModelStep {
+ public:
+  void step(World& world, const StepSettings& settings, SharedStages& shared) override;
+  std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+
+ private:
+  ContactImpulses impulses_;
+  DriftProjection projection_;
+  std::vector<double> reach_;      // how far each body can travel in the step
+  std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
+};
+
+// How far each body's points can travel within a step (m; 0 for static bodies): the speculative
+// margin the detector adds for it, so that every pair that can touch during the step is a contact
+// at its start. (|v| + |g| dt + |w| r) dt, with r the body's radius about its centre of mass.
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach);
+
+}  // namespace tumble

@@ -1,0 +1,9 @@
+// What a body's collision shape is made of: imported mesh pieces, a box, an icosphere, or the
+// ground plane (a half-space, no pieces).
+#pragma once
+
+namespace tumble {
+
+enum class ShapeKind { Mesh, Box, Sphere, Plane };
+
+}  // namespace tumble
