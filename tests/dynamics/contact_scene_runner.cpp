@@ -42,7 +42,7 @@ SceneRun runScene(const std::string& name, double seconds,
                   const std::function<void(const World&)>& on_step, int penetration_every,
                   const std::function<void(Scene&)>& edit) {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + name + ".json");
-  // These tests hold the contact solve itself to the thresholds: sleeping would freeze
+  // These tests hold the contact solve itself to its acceptance thresholds: sleeping would freeze
   // whatever it reached. A test that is about sleeping turns it back on in `edit`.
   scene.simulation.step.sleep.enabled = false;
   if (edit) edit(scene);

@@ -1,6 +1,6 @@
 // The contact pipeline against closed forms, on the benchmark scenes (docs/bench/scenes.md) at
-// dt = 1/240 s with default settings. The thresholds are the contact issue's; where they came
-// from is said beside each.
+// dt = 1/240 s with default settings. The thresholds are the contact pipeline's acceptance bounds;
+// where they came from is said beside each.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -53,7 +53,7 @@ TEST_CASE("incline: the cube slides by the closed form, or sticks", "[contact]")
   SECTION("mu = 0.3 slides 0.5 g (sin 30 - mu cos 30) t^2") {
     auto run = runScene("incline_slide", 2);
     double expected = 0.5 * 9.81 * (0.5 - 0.3 * std::cos(M_PI / 6)) * 4;
-    // RK4 integrates the constant acceleration exactly; 1e-3 m is the bound.
+    // RK4 integrates the constant acceleration exactly; 1e-3 m is the acceptance bound.
     CHECK(std::abs(-last(run, 1).x.x() - expected) < 1e-3);
     CHECK(last(run, 1).w.norm() < 1e-9);
   }
@@ -80,7 +80,7 @@ TEST_CASE("tunnel: no cube passes through a 1 cm wall at 100 m/s", "[contact]") 
 
 // The tunnelling bound looks at pairs that can meet within the step, by their approach along the
 // separating axis: the cubes fly uncut until the step in which they reach the wall. A bound by
-// the fastest body against the thinnest piece (what it was until session 5) cut every step of
+// the fastest body against the thinnest piece (as before b5c78a8, 2026-11-23) cut every step of
 // this scene into 0.01 m / (4 * 100 m/s) = 25 us sub-steps: 167 per step, 8000 in all.
 TEST_CASE("tunnel: steps are cut only where a cube reaches the wall", "[contact]") {
   auto run = runScene("tunnel", 0.2);

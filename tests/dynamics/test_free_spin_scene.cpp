@@ -13,7 +13,7 @@ using namespace tumble;
 
 TEST_CASE("free spin scene conserves energy and |L| with RK4", "[dynamics]") {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/free_spin.json");
-  // The bounds: 1e-6 at dt = 1/600 and 1e-4 at dt = 1/240 (relative, over 10 s).
+  // The acceptance bounds: 1e-6 at dt = 1/600 and 1e-4 at dt = 1/240 (relative, over 10 s).
   for (auto [dt, bound] : {std::pair{1.0 / 600, 1e-6}, std::pair{1.0 / 240, 1e-4}}) {
     INFO("dt = " << dt);
     setTimeStep(scene, dt, "test");

@@ -81,8 +81,8 @@ TEST_CASE("free fall matches the closed form", "[dynamics]") {
 }
 
 TEST_CASE("torque-free rotation conserves energy and angular momentum (RK4)", "[dynamics]") {
-  // Tolerances are the ones the contact issue holds the free-spin scene to: 1e-6 at dt = 1/600,
-  // 1e-4 at dt = 1/240, over 10 s through three intermediate-axis flips.
+  // Tolerances are the ones the free-spin scene is held to (test_free_spin_scene.cpp): 1e-6 at
+  // dt = 1/600, 1e-4 at dt = 1/240, over 10 s through three intermediate-axis flips.
   Drift fine = spin(Integrator::Rk4, 1.0 / 600, 10);
   CHECK(fine.energy < 1e-6);
   CHECK(fine.momentum < 1e-12);   // L is the state and no torque acts: exact to rounding

@@ -1,4 +1,4 @@
-// Contact scene 8 (issue 3): the pile. 100 boxes and convex hulls dropped into a bin must, after
+// The pile (scenes/pile.json): 100 boxes and convex hulls dropped into a bin must, after
 // 5 s, all rest inside it without penetrating more than 1e-3 m and without a numerical fault (a
 // NaN, runaway energy or deep penetration stops the run with an error, failing the test).
 //
@@ -54,31 +54,31 @@ TEST_CASE("pile: the first second falls into the bin without a numerical fault",
   runPile(1);
 }
 
-// Sampled every 30 steps. Until session 5 pairs ended steps overlapping by 2-8 mm during the
-// first impacts (1.1 mm at these samples): a corner landing in a pair that already touched was
-// not back-stepped, and the projection pushed each pair out by its deepest point, lifting its
-// resting points too. With landings timed and the projection turning bodies about their resting
-// points (position_projection.h): 1.8e-4 m.
+// Sampled every 30 steps. Before 48221f4 (2026-11-23) pairs ended steps overlapping by 2-8 mm
+// during the first impacts (1.1 mm at these samples): a corner landing in a pair that already
+// touched was not back-stepped, and the projection pushed each pair out by its deepest point,
+// lifting its resting points too. With landings timed and the projection turning bodies about
+// their resting points (position_projection.h), at 48221f4: 1.8e-4 m.
 TEST_CASE("pile: no penetration above 1e-3 m in the first second", "[contact][pile]") {
   CHECK(runPile(1).penetration < 1e-3);
 }
 
 // Known failure: at 5 s every piece is inside the bin and no pair overlaps by more than 9.1e-4 m,
 // but the pile still creeps: the fastest piece moves at 0.017 m/s and spins at 0.061 rad/s (at
-// rest would be below the resting-contact speed, 1e-3 m/s). Session 6 (commit def6d4b), about
-// 1.5 minutes of CPU. At 25f2658 (before): 0.010 m/s, 0.035 rad/s, 1.05e-3 m deep, 47 pieces
-// faster than 1e-3 m/s. Islands too large to pivot were then solved by Gauss-Seidel on the
+// rest would be below the resting-contact speed, 1e-3 m/s). At def6d4b (2026-11-24), about
+// 1.5 minutes of CPU. At 25f2658 (2026-11-23): 0.010 m/s, 0.035 rad/s, 1.05e-3 m deep, 47 pieces
+// faster than 1e-3 m/s. Islands too large to pivot were there solved by Gauss-Seidel on the
 // accelerations from zero at every sub-step, and 7442 of 7545 such solves stopped at the
-// 200-sweep cap with the pieces unbalanced: they sank and slid at millimetres per second. Now
-// solved at the velocity level and warm-started (contact_solver.cpp, restIslandAtVelocityLevel),
-// which stood the pyramid of 55 up, but on the pile most of these solves (3722 of 4301) still stop
-// at the cap, and pieces are kicked by impacts passed on through the pile. Tried in session 6 and
-// not kept: asking approaching normal rows of the acceleration-level solve to stop within the
+// 200-sweep cap with the pieces unbalanced: they sank and slid at millimetres per second. Solved
+// at the velocity level and warm-started (contact_solver.cpp, restIslandAtVelocityLevel), they
+// stand the pyramid of 55 up, but on the pile most of these solves (3722 of 4301 at def6d4b) still
+// stop at the cap, and pieces are kicked by impacts passed on through the pile. Tried on 25f2658
+// and not kept: asking approaching normal rows of the acceleration-level solve to stop within the
 // step (39 pieces above 1e-3 m/s), warm-starting that solve (33, 1.5x slower). The time-stepping
 // model rests the same pile to 2e-7 m/s (test_time_stepping.cpp): one velocity-level solve per
 // step, never cut, over contacts within a speculative margin, and its Gauss-Seidel converges.
 //
-// Session 7 (commit bdff5fc, near contacts in the velocity-level islands): 0.078 m/s, 0.28 rad/s,
+// At bdff5fc (2026-11-24, near contacts in the velocity-level islands): 0.078 m/s, 0.28 rad/s,
 // 9.1e-4 m deep, 70 s. The pile is chaotic: the end speed of one run says little (0.017 at
 // def6d4b). What kicks settled pieces, counted over 3.5-4.2 s (a piece below 2e-3 m/s faster than
 // 5e-3 m/s after one resting solve and integration): 400 kicks, 367 of them in islands solved
@@ -96,8 +96,8 @@ TEST_CASE("pile: after 5 s all 100 pieces rest inside the bin (reached: 0.078 m/
 }
 
 // The same 5 s with the scene as a user runs it: sleeping on (the scene default; runScene turns it
-// off for the solver tests), so that islands at rest freeze until touched. Known failure (session
-// 7, bdff5fc): 0.047 m/s, 0.15 rad/s, 9.1e-4 m deep, 117 s; an island sleeps only when every
+// off for the solver tests), so that islands at rest freeze until touched. Known failure (at
+// bdff5fc, 2026-11-24): 0.047 m/s, 0.15 rad/s, 9.1e-4 m deep, 117 s; an island sleeps only when every
 // piece in it is quiet, and the kicks above keep some islands awake (`tumble simulate
 // scenes/pile.json -v`, another run: 72 of 100 asleep at the end, one piece at 9.5e-3 m/s).
 TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (reached: 0.047 m/s)", "[.][contact][pile][sleep][!shouldfail]") {
@@ -109,7 +109,7 @@ TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (rea
 
 // And with every resting island solved at the velocity level with its near contacts
 // ("pivoting_max_rows": 0; contact_solver.cpp, restIslandAtVelocityLevel), sleeping off. Known
-// failure (session 7, bdff5fc): 4.4e-3 m/s, 0.022 rad/s, and 8.1e-3 m deep at one of the test's
+// failure (at bdff5fc, 2026-11-24): 4.4e-3 m/s, 0.022 rad/s, and 8.1e-3 m deep at one of the test's
 // samples, in 14 s instead of 70. With `tumble simulate` (penetration not measured): two pieces
 // at 0.02 m/s at 5 s; a variant that also took near contacts closing by their own speed rested
 // below 5e-5 m/s from 3.5 s; without near contacts, 7 pieces above 1e-3 m/s at 5 s in twice the

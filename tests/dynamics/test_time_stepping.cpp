@@ -67,8 +67,8 @@ TEST_CASE("time stepping: the cube sticks on the incline when mu > tan 30", "[co
 
 TEST_CASE("time stepping: 1000:1 mass ratio stays stacked without penetrating", "[contact][time_stepping]") {
   auto run = runScene("mass_ratio", 5, {}, 1, timeStepping);
-  // The two-box island is pivoted exactly, so the issue's Baraff bounds hold (Gauss-Seidel alone
-  // lets the heavy box crush the light one: 0.5 m, as Bullet's 0.14 m).
+  // The two-box island is pivoted exactly, so the Baraff model's bounds (test_contact_scenes.cpp)
+  // hold (Gauss-Seidel alone lets the heavy box crush the light one: 0.5 m, as Bullet's 0.14 m).
   CHECK(run.max_penetration < 1e-5);
   CHECK(std::abs(last(run, 2).x.z() - 1.5) < 1e-5);
   CHECK(last(run, 2).x.head<2>().norm() < 1e-5);
@@ -96,8 +96,8 @@ TEST_CASE("time stepping: no cube passes through a 1 cm wall at 100 m/s", "[cont
   }
 }
 
-// Contact scene 8 (issue 3) with the time-stepping model: the pile comes to rest inside the bin
-// within the issue's 5 s. Reached (session 6): every piece slower than 3e-7 m/s and 5e-7 rad/s
+// The pile (scenes/pile.json) with the time-stepping model comes to rest inside the bin within
+// 5 s. Reached at a92aab9 (2026-11-24): every piece slower than 3e-7 m/s and 5e-7 rad/s
 // from 3.7 s on, 1.6e-7 m/s at 5 s; the deepest overlap in the last half second 9.8e-7 m (the
 // Baraff model still creeps at 1e-2 m/s at 5 s: test_pile_scene.cpp says why).
 TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, under 1e-4 m deep", "[contact][time_stepping]") {
@@ -110,9 +110,9 @@ TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, u
     timeStepping(s);
     s.simulation.step.contact.max_direct_rows = 0;   // every island by Gauss-Seidel: the fast setting for piles
   });
-  // The issue's bound for the pile is 1e-3 m; this is a tenth of it, so that it also catches a
-  // return to a single projection pass per step (5.5e-4 m here). Reached: 9.8e-7 m in the last
-  // half second and at the end. While the pieces land (0.3-0.7 s) pairs overlap by up to
+  // The pile's acceptance bound is 1e-3 m (test_pile_scene.cpp); this is a tenth of it, so that it
+  // also catches a return to a single projection pass per step (5.5e-4 m here). Reached: 9.8e-7 m
+  // in the last half second and at the end. While the pieces land (0.3-0.7 s) pairs overlap by up to
   // 2.2 cm for a step or two (a corner rotating in that the start-of-step contacts did not hold).
   INFO("deepest overlap in the last 0.5 s " << deepest_late << " m, at the end " << run.max_penetration << " m");
   CHECK(deepest_late < 1e-4);

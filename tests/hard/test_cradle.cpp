@@ -1,6 +1,7 @@
-// Hard case 2 (issue 6): Newton's cradle. The impulse solver must pass an impact on through a
-// chain of contacts (impulse_propagation.h) while still solving the points of one pair together,
-// which the flat cube drop pins (tests/dynamics: no spin at all when it lands on four corners).
+// Hard case 2 (docs/hard-cases.md): Newton's cradle. The impulse solver must pass an impact on
+// through a chain of contacts (impulse_propagation.h) while still solving the points of one pair
+// together, which the flat cube drop pins (tests/dynamics: no spin at all when it lands on four
+// corners).
 #include <catch2/catch.hpp>
 
 #include <cmath>

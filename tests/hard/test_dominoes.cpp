@@ -1,5 +1,5 @@
-// Hard case 12 (issue 6): a chain of 30 dominoes, the first tipped past its critical angle: all
-// fall, in order, and the speed of the wave agrees within 1 % between dt and dt/2.
+// Hard case 12 (docs/hard-cases.md): a chain of 30 dominoes, the first tipped past its critical
+// angle: all fall, in order, and the speed of the wave agrees within 1 % between dt and dt/2.
 // Horizon 3.5 s (the wave reaches the last domino at about 2.35 s); two runs, about 5 minutes of
 // wall time together on the 2-core machine (about 13 sub-steps per step, 91 % in the resting solve).
 #include <catch2/catch.hpp>
@@ -75,13 +75,13 @@ TEST_CASE("dominoes: all 30 fall, in order, at dt", "[hard][dominoes]") { checkA
 TEST_CASE("dominoes: all 30 fall, in order, at dt/2", "[hard][dominoes]") { checkAllFallInOrder(2); }
 
 // The least-squares speed over dominoes 5-30, fall times interpolated within the step. A known
-// failure, and a fragile figure: it was 1.19 % until session 3, 0.75 % after session 3's fixes,
-// 1.56 % after session 5's projection, and 1.96 % in session 6 (1.49024 against 1.46165 m/s),
-// after islands too large to pivot went to the velocity-level solve. Variants tried in session 6
-// that also sent pivoting solves that stop short there gave 0.35 %, then 1.37 % after a change at
-// rounding level only, then 7.5 % with dynamic-friction failures left to boxed friction: the
-// chain amplifies small differences in its resting solves to percents of its wave speed. Until
-// the agreement holds within 1 % under such changes, it stays marked.
+// failure, and a fragile figure: 1.19 % at d1ee62c (2026-11-23), 0.75 % at 0a8f771 (2026-11-23),
+// 1.56 % at f3ae70d (2026-11-23, the drift projection), and 1.96 % at def6d4b (2026-11-24: 1.49024
+// against 1.46165 m/s), where only islands too large to pivot go to the velocity-level solve.
+// Also sending pivoting solves that stop short there gave 0.35 %, then 1.37 % after a change at
+// rounding level only (5be4f35, 2026-11-24), then 7.5 % with dynamic-friction failures left to
+// boxed friction: the chain amplifies small differences in its resting solves to percents of its
+// wave speed. Until the agreement holds within 1 % under such changes, it stays marked.
 TEST_CASE("dominoes: the wave speed agrees within 1 % between dt and dt/2 (reached: 1.96 %)",
           "[hard][dominoes][!shouldfail]") {
   double coarse = waveSpeed(runAt(1)), fine = waveSpeed(runAt(2));

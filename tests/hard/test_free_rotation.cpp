@@ -1,5 +1,6 @@
-// Hard case 10 (issue 6): torque-free rotation of a box 1.0 x 0.4 x 0.1 m. About the intermediate
-// axis it flips (Dzhanibekov) while energy and |L| stay put; about the major or minor axis it stays.
+// Hard case 10 (docs/hard-cases.md): torque-free rotation of a box 1.0 x 0.4 x 0.1 m. About the
+// intermediate axis it flips (Dzhanibekov) while energy and |L| stay put; about the major or minor
+// axis it stays.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -80,8 +81,9 @@ TEST_CASE("free rotation: about the major or the minor axis it stays within 1 de
 }
 
 // The midpoint rotation update alone (integrator.cpp) keeps the energy error bounded but not
-// one-sided: +5.5e-6 relative at worst over these 10 s until session 5. The turn is now projected
-// back onto the energy it had before (L untouched), so it never gains; it still flips.
+// one-sided: +5.5e-6 relative at worst over these 10 s (measured before 862001f, 2026-11-23). The
+// turn is therefore projected back onto the energy it had before (L untouched), so it never gains;
+// it still flips.
 TEST_CASE("free rotation: semi-implicit Euler never gains energy", "[hard][free_rotation]") {
   SpinOutcome out = runSpin(hard::loadHardScene("free_rotation_intermediate"), 10, 1, Integrator::SemiImplicitEuler);
   INFO("largest energy gain " << out.energy_gain << " (relative), flips " << out.flips);

@@ -1,4 +1,4 @@
-// Hard cases 7 and 8 (issue 6): Coulomb friction at its edge. Stick or slip on a slope whose
+// Hard cases 7 and 8 (docs/hard-cases.md): Coulomb friction at its edge. Stick or slip on a slope whose
 // tan(theta) = 0.5 lies between the two friction coefficients; a block sliding to a stop.
 #include <catch2/catch.hpp>
 
@@ -31,11 +31,12 @@ TEST_CASE("incline tan 0.5: mu = 0.51 sticks, creep below 1e-4 m in 25 s", "[har
   CHECK(creep < 1e-4);
 }
 
-// Was a known failure (chatter at 8e-3 m/s feeding a spin of 0.03 rad/s about the vertical):
-// dynamic friction held over a whole step overshoots below mu g dt (0.016 m/s). A slide slower than
-// friction can stop within the step is now held by static friction that asks for the slip to
-// vanish within the step (contact_solver.cpp, slides and stopResidualSlip): stops at 0.76667 s
-// (analytic 0.76453 s, within one step), slides 1.1468 m (1.14679 m), no spin.
+// Dynamic friction held over a whole step overshoots below mu g dt (0.016 m/s): before 17a5ba7
+// (2026-11-23) this was a known failure (chatter at 8e-3 m/s feeding a spin of 0.03 rad/s about the
+// vertical). A slide slower than friction can stop within the step is held by static friction that
+// asks for the slip to vanish within the step (contact_solver.cpp, slides and stopResidualSlip): at
+// 17a5ba7 it stops at 0.76667 s (analytic 0.76453 s, within one step), slides 1.1468 m (1.14679 m),
+// no spin.
 TEST_CASE("sliding block: stops at v0/(mu g) after v0^2/(2 mu g), never spinning", "[hard][friction]") {
   Scene scene = hard::loadHardScene("sliding_block");
   const double v0 = 3, mu = 0.4, dt = scene.simulation.step.dt;

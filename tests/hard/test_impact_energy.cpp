@@ -1,7 +1,7 @@
-// Hard case 9 (issue 6): kinetic energy never grows at an impact. 10 000 seeded random frictional
-// impacts, straight on the impulse stage (resolveCollisions): boxes and random convex hulls, on
-// the ground or on each other, random poses, velocities and spins, e and mu in [0, 1]. Newton's
-// law with friction can create energy (Kane's paradox); the solver must not.
+// Hard case 9 (docs/hard-cases.md): kinetic energy never grows at an impact. 10 000 seeded random
+// frictional impacts, straight on the impulse stage (resolveCollisions): boxes and random convex
+// hulls, on the ground or on each other, random poses, velocities and spins, e and mu in [0, 1].
+// Newton's law with friction can create energy (Kane's paradox); the solver must not.
 #include <catch2/catch.hpp>
 
 #include <random>

@@ -1,6 +1,6 @@
-// Hard case 3 (issue 6): redundant contacts. Four coplanar corners with one normal make Baraff's
-// matrix A singular (D. Baraff, "Fast contact force computation for nonpenetrating rigid bodies",
-// SIGGRAPH 1994); eight duplicated corners and a slab's sixteen leg corners more so.
+// Hard case 3 (docs/hard-cases.md): redundant contacts. Four coplanar corners with one normal make
+// Baraff's matrix A singular (D. Baraff, "Fast contact force computation for nonpenetrating rigid
+// bodies", SIGGRAPH 1994); eight duplicated corners and a slab's sixteen leg corners more so.
 // The resting-force solve must still terminate, carry the weight exactly, and not put the weight
 // on one contact with large opposing forces on others.
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
-// Hard case 5 (issue 6): a tall stack of 20 cubes and a pyramid wall of 55, no sleeping: drift
-// < 1 % of the edge, tilt < 0.1 deg, kinetic energy < 1e-6 m g h after 1 s.
+// Hard case 5 (docs/hard-cases.md): a tall stack of 20 cubes and a pyramid wall of 55, no sleeping:
+// drift < 1 % of the edge, tilt < 0.1 deg, kinetic energy < 1e-6 m g h after 1 s.
 //
-// Shorter horizon than the issue's 60 s for the stack of 20 with the default (Baraff) model: it
+// Shorter horizon than the scene's 60 s for the stack of 20 with the default (Baraff) model: it
 // runs 1.5 s here (about 9 s of wall time on the 2-core machine). The pyramid stands the full 60 s
 // with both contact models, and the stack of 20 with the time-stepping model.
 #include <catch2/catch.hpp>
@@ -56,20 +56,20 @@ TEST_CASE("stack of 20: stands without drift, tilt or jitter (1.5 s horizon)", "
 }
 
 // Every box rests on two (eight coplanar points): the pyramid's one island has 660 rows, past the
-// pivoting limit. Until session 6 it sagged with the Baraff model (1.8 cm and 1.5 deg in 0.3 s,
-// a known failure): Gauss-Seidel on the accelerations, restarted from zero at every sub-step,
-// stopped at its 200-sweep cap with the boxes unbalanced. Islands too large to pivot are now
+// pivoting limit. Before 5be4f35 (2026-11-24) it sagged with the Baraff model (1.8 cm and 1.5 deg
+// in 0.3 s, a known failure): Gauss-Seidel on the accelerations, restarted from zero at every
+// sub-step, stopped at its 200-sweep cap with the boxes unbalanced. Islands too large to pivot are
 // solved at the velocity level over the step, warm-started from the last sub-step's impulses
-// (contact_solver.cpp, restIslandAtVelocityLevel), and it stands the issue's full 60 s: drift
-// 1.9e-5 m, tilt 0.0016 deg, kinetic energy after 1 s 4.4e-12 J (m g h = 540 J); about 10 s of
-// wall time here.
+// (contact_solver.cpp, restIslandAtVelocityLevel), and it stands the scene's full 60 s: at 5be4f35
+// drift 1.9e-5 m, tilt 0.0016 deg, kinetic energy after 1 s 4.4e-12 J (m g h = 540 J); about 10 s
+// of wall time here.
 TEST_CASE("pyramid of 55: stands 60 s without drift, tilt or jitter", "[hard][stack][pyramid]") {
   checkStack(runStack("pyramid55", 60));
 }
 
-// The time-stepping model (simulation.step.model = "time_stepping") holds both for the issue's
+// The time-stepping model (simulation.step.model = "time_stepping") holds both for the scenes'
 // full 60 s: Gauss-Seidel warm-started from the last step's impulses converges on the pyramid's
-// 660 rows (as the Baraff model's large islands now do too),
+// 660 rows (as the Baraff model's large islands do too),
 // and the stack's 240 rows are pivoted when Gauss-Seidel leaves them unconverged. About 12 s of
 // wall time each here.
 TEST_CASE("pyramid of 55, time stepping: stands 60 s without drift, tilt or jitter", "[hard][stack][pyramid][time_stepping]") {

@@ -1,5 +1,5 @@
-// Hard case 11 (issue 6): a box tilted about a bottom edge falls back below the critical angle
-// atan(b/h) and tips over above it; it never stays balanced on an edge.
+// Hard case 11 (docs/hard-cases.md): a box tilted about a bottom edge falls back below the critical
+// angle atan(b/h) and tips over above it; it never stays balanced on an edge.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -65,12 +65,13 @@ TEST_CASE("tipping: above the critical angle the box tips over onto its side", "
   CHECK(std::abs(out.tilt_deg - 90) < 0.5);
 }
 
-// Until session 5 the box kept rocking (0.23 m/s + rad/s after 5 s falling back, 0.44 tipped over):
-// a landing edge in a pair that already touched was not back-stepped, so its impulse came a
-// sub-step late, after gravity had sped it up; the projection lifted the whole box by the landing
-// edge's depth, the resting edge too; and rocking shrunk to the contact tolerance never ended.
-// Now landings are timed (pipeline.cpp, backStep), the projection turns the box about its resting
-// edge (position_projection.h) and slow impacts settle (impulse_propagation.cpp): below 1e-6.
+// Before 48221f4 (2026-11-23) the box kept rocking (0.23 m/s + rad/s after 5 s falling back, 0.44
+// tipped over): a landing edge in a pair that already touched was not back-stepped, so its impulse
+// came a sub-step late, after gravity had sped it up; the projection lifted the whole box by the
+// landing edge's depth, the resting edge too; and rocking shrunk to the contact tolerance never
+// ended. Landings are timed (pipeline.cpp, backStep), the projection turns the box about its
+// resting edge (position_projection.h) and slow impacts settle (impulse_propagation.cpp): the
+// speed ends below 1e-6.
 TEST_CASE("tipping: the box comes to rest on its face", "[hard][tipping]") {
   const double alpha = std::atan(0.5) * 180 / M_PI;
   double worst = 0;

@@ -1,7 +1,7 @@
-// Hard case 6 (issue 6): tunnelling. 1000 seeded shots of small boxes and spheres (1-10 cm) at
-// 10-200 m/s into static walls 1 mm - 1 cm thick (scenes/hard/tunnel_shot.json, changed per
-// shot): none may pass through, and for the straight shots back-stepping must find the time of
-// impact within 1e-3 dt of the analytic time.
+// Hard case 6 (docs/hard-cases.md): tunnelling. 1000 seeded shots of small boxes and spheres
+// (1-10 cm) at 10-200 m/s into static walls 1 mm - 1 cm thick (scenes/hard/tunnel_shot.json,
+// changed per shot): none may pass through, and for the straight shots back-stepping must find the
+// time of impact within 1e-3 dt of the analytic time.
 //
 // Shorter horizon than a free flight: each shot starts 0.5-3 steps before its impact and runs 3
 // steps past it. That is where tunnelling happens (the step in which the shot reaches the wall);
@@ -141,7 +141,8 @@ TEST_CASE("tunnelling: straight shots whose steps all finish find the impact tim
 // Every straight shot, with no step left unfinished: the tunnelling bound cuts a step per pair by
 // the approach along its separating axis (pipeline.cpp), so a shot is cut once at the wall rather
 // than into (thinnest piece) / (4 u) sub-steps everywhere (up to ~3300 per step at 200 m/s against
-// 1 mm, past the 256 sub-step cap: until session 5 steps were lost and impacts came late).
+// 1 mm, past the 256 sub-step cap: before b5c78a8 (2026-11-23) steps were lost and impacts came
+// late).
 TEST_CASE("tunnelling: straight shots' impact times within 1e-3 dt, and no step left unfinished",
           "[hard][tunnelling]") {
   const Volley& v = volley();

@@ -1,5 +1,5 @@
-// Hard case 1 (issue 6): the bouncing ball comes to rest in finite time (Zeno). An icosphere of
-// 642 vertices lands face down (three points of one face, solved as one impact).
+// Hard case 1 (docs/hard-cases.md): the bouncing ball comes to rest in finite time (Zeno). An
+// icosphere of 642 vertices lands face down (three points of one face, solved as one impact).
 #include <catch2/catch.hpp>
 
 #include <cmath>
