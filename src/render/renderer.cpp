@@ -53,12 +53,9 @@ class GlRenderer final : public Renderer {
 };
 
 GlRenderer::GlRenderer(const RenderConfig& config) : config_(config) {
-  const std::filesystem::path dir =
-      config.shader_dir.empty() ? std::filesystem::path(TUMBLE_DEFAULT_SHADER_DIR)
-                                : config.shader_dir;
   targets_ = std::make_unique<RenderTargets>(config.width, config.height, config.samples);
   shadow_map_ = std::make_unique<ShadowMap>(config.shadow_map_size);
-  programs_ = std::make_unique<ShaderPrograms>(dir);
+  programs_ = std::make_unique<ShaderPrograms>(config.shader_dir);
   glGenBuffers(1, &instance_buffer_);
   createGround();
   throwIfGlError("setting up the renderer");

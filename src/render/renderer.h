@@ -16,7 +16,7 @@ struct RenderConfig {
   int width = 1280, height = 720;          // pixels
   int samples = 4;                         // MSAA samples: 1 (off) or 4 (llvmpipe's maximum)
   int shadow_map_size = 2048;              // texels per side of the shadow map
-  std::filesystem::path shader_dir;        // folder holding the .vert/.frag files
+  std::filesystem::path shader_dir;        // folder of .vert/.frag files; empty: the built-in copy
 };
 
 class Renderer {
