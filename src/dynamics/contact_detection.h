@@ -42,7 +42,7 @@ class ContactDetector {
   void pairContacts(const World& world, const PiecePair& pair, double margin_m, std::vector<Contact>& out);
 
   // A pair of pieces that may meet within the bodies' reach: the candidates of the tunnelling
-  // bound (pipeline.cpp). `gap` is a lower bound on their distance now (0 when touching or
+  // bound (baraff/tunnelling_bound.cpp). `gap` is a lower bound on their distance now (0 when touching or
   // overlapping), found along `axis` (world, unit, from a to b; zero if none was valid);
   // `thickness` the thinner piece's width, the most the two may overlap unseen.
   struct NearPair {

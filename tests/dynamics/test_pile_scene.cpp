@@ -70,7 +70,7 @@ TEST_CASE("pile: no penetration above 1e-3 m in the first second", "[contact][pi
 // faster than 1e-3 m/s. Islands too large to pivot were there solved by Gauss-Seidel on the
 // accelerations from zero at every sub-step, and 7442 of 7545 such solves stopped at the
 // 200-sweep cap with the pieces unbalanced: they sank and slid at millimetres per second. Solved
-// at the velocity level and warm-started (contact_solver.cpp, restIslandAtVelocityLevel), they
+// at the velocity level and warm-started (baraff/resting_forces.cpp, solveAtVelocityLevel), they
 // stand the pyramid of 55 up, but on the pile most of these solves (3722 of 4301 at def6d4b) still
 // stop at the cap, and pieces are kicked by impacts passed on through the pile. Tried on 25f2658
 // and not kept: asking approaching normal rows of the acceleration-level solve to stop within the
@@ -108,7 +108,7 @@ TEST_CASE("pile: after 5 s with sleeping all 100 pieces rest inside the bin (rea
 }
 
 // And with every resting island solved at the velocity level with its near contacts
-// ("pivoting_max_rows": 0; contact_solver.cpp, restIslandAtVelocityLevel), sleeping off. Known
+// ("pivoting_max_rows": 0; baraff/resting_forces.cpp, solveAtVelocityLevel), sleeping off. Known
 // failure (at bdff5fc, 2026-11-24): 4.4e-3 m/s, 0.022 rad/s, and 8.1e-3 m deep at one of the test's
 // samples, in 14 s instead of 70. With `tumble simulate` (penetration not measured): two pieces
 // at 0.02 m/s at 5 s; a variant that also took near contacts closing by their own speed rested

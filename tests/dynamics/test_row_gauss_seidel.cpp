@@ -130,7 +130,7 @@ TEST_CASE("resting islands above the pivoting limit are solved by Gauss-Seidel a
 }
 
 // The pipeline passes a memory: islands past the pivoting limit are then solved at the velocity
-// level over the step and warm-started from the last call's impulses (contact_solver.cpp). A box
+// level over the step and warm-started from the last call's impulses (baraff/resting_forces.cpp). A box
 // at rest carries its weight, and the second call starts at the first's answer: converged at once.
 TEST_CASE("with a memory, islands above the pivoting limit start from the last call's impulses", "[contact][gauss_seidel]") {
   Resting r = restingBox();

@@ -1,6 +1,6 @@
 // A landing edge while the opposite edge rests (impulse_propagation.cpp, settleSlowImpact): at
 // speed, Newton's law turns the box about the landing edge and lifts the resting one (a rocking
-// block); slower than settleSpeed (0.08 m/s, contact_solver.h) the impact settles and nothing
+// block); slower than settleSpeed (0.08 m/s, contact_solve_common.h) the impact settles and nothing
 // lifts off, so rocking ends instead of chattering at the contact tolerance.
 #include <catch2/catch.hpp>
 

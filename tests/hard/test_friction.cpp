@@ -34,7 +34,7 @@ TEST_CASE("incline tan 0.5: mu = 0.51 sticks, creep below 1e-4 m in 25 s", "[har
 // Dynamic friction held over a whole step overshoots below mu g dt (0.016 m/s): before 17a5ba7
 // (2026-11-23) this was a known failure (chatter at 8e-3 m/s feeding a spin of 0.03 rad/s about the
 // vertical). A slide slower than friction can stop within the step is held by static friction that
-// asks for the slip to vanish within the step (contact_solver.cpp, slides and stopResidualSlip): at
+// asks for the slip to vanish within the step (baraff/resting_forces.cpp, slides and stopResidualSlip): at
 // 17a5ba7 it stops at 0.76667 s (analytic 0.76453 s, within one step), slides 1.1468 m (1.14679 m),
 // no spin.
 TEST_CASE("sliding block: stops at v0/(mu g) after v0^2/(2 mu g), never spinning", "[hard][friction]") {

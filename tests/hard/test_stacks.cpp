@@ -60,7 +60,7 @@ TEST_CASE("stack of 20: stands without drift, tilt or jitter (1.5 s horizon)", "
 // in 0.3 s, a known failure): Gauss-Seidel on the accelerations, restarted from zero at every
 // sub-step, stopped at its 200-sweep cap with the boxes unbalanced. Islands too large to pivot are
 // solved at the velocity level over the step, warm-started from the last sub-step's impulses
-// (contact_solver.cpp, restIslandAtVelocityLevel), and it stands the scene's full 60 s: at 5be4f35
+// (baraff/resting_forces.cpp, solveAtVelocityLevel), and it stands the scene's full 60 s: at 5be4f35
 // drift 1.9e-5 m, tilt 0.0016 deg, kinetic energy after 1 s 4.4e-12 J (m g h = 540 J); about 10 s
 // of wall time here.
 TEST_CASE("pyramid of 55: stands 60 s without drift, tilt or jitter", "[hard][stack][pyramid]") {

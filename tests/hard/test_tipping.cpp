@@ -69,7 +69,7 @@ TEST_CASE("tipping: above the critical angle the box tips over onto its side", "
 // tipped over): a landing edge in a pair that already touched was not back-stepped, so its impulse
 // came a sub-step late, after gravity had sped it up; the projection lifted the whole box by the
 // landing edge's depth, the resting edge too; and rocking shrunk to the contact tolerance never
-// ended. Landings are timed (pipeline.cpp, backStep), the projection turns the box about its
+// ended. Landings are timed (baraff/back_step.cpp), the projection turns the box about its
 // resting edge (position_projection.h) and slow impacts settle (impulse_propagation.cpp): the
 // speed ends below 1e-6.
 TEST_CASE("tipping: the box comes to rest on its face", "[hard][tipping]") {

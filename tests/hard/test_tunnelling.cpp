@@ -139,10 +139,10 @@ TEST_CASE("tunnelling: straight shots whose steps all finish find the impact tim
 }
 
 // Every straight shot, with no step left unfinished: the tunnelling bound cuts a step per pair by
-// the approach along its separating axis (pipeline.cpp), so a shot is cut once at the wall rather
-// than into (thinnest piece) / (4 u) sub-steps everywhere (up to ~3300 per step at 200 m/s against
-// 1 mm, past the 256 sub-step cap: before b5c78a8 (2026-11-23) steps were lost and impacts came
-// late).
+// the approach along its separating axis (baraff/tunnelling_bound.cpp), so a shot is cut once at
+// the wall rather than into (thinnest piece) / (4 u) sub-steps everywhere (up to ~3300 per step at
+// 200 m/s against 1 mm, past the 256 sub-step cap: before b5c78a8 (2026-11-23) steps were lost and
+// impacts came late).
 TEST_CASE("tunnelling: straight shots' impact times within 1e-3 dt, and no step left unfinished",
           "[hard][tunnelling]") {
   const Volley& v = volley();
