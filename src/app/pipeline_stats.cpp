@@ -13,10 +13,10 @@ void printPipelineStats(const Pipeline& pipeline) {
                    total > 0 ? 100 * s.seconds / total : 0.0);
   const PipelineCounters& c = pipeline.counters();
   std::fprintf(stderr,
-               "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld, unresolved %ld, "
-               "impacts too deep to go back for %ld\n",
-               c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.stuck_substeps,
-               c.inconsistent_pairs);
+               "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld (%ld past a body's reach, "
+               "not made), unresolved %ld, impacts too deep to go back for %ld\n",
+               c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.capped_projections,
+               c.stuck_substeps, c.inconsistent_pairs);
   std::fprintf(stderr,
                "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld, "
                "dynamic-friction fallbacks %ld\n",

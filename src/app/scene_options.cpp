@@ -26,8 +26,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
 
 void addKeepGoingOption(CLI::App& command, SceneOptions& o) {
   command.add_flag("--keep-going", o.keep_going,
-                   "On a numerical fault (NaN, runaway energy, deep penetration) report it and go on "
-                   "instead of stopping with exit code 70");
+                   "On a numerical fault (NaN, runaway or gained energy, deep penetration, a teleport) "
+                   "report it and go on instead of stopping with exit code 70");
 }
 
 void reportFaults(const FaultCheck& faults) {

@@ -38,9 +38,29 @@ std::string brokenParts(const RigidBody& b) {
   return parts;
 }
 
-const char* kKindNames[] = {"non-finite state", "runaway energy", "deep penetration"};
+const char* kKindNames[] = {"non-finite state", "runaway energy", "deep penetration", "unexplained motion",
+                            "energy gain"};
+static_assert(sizeof kKindNames / sizeof kKindNames[0] == static_cast<int>(Fault::Kind::Count));
+
+// How far the position correction may move each body in a step: the deepest overlap that is not
+// itself a fault.
+std::vector<double> correctionReach(const World& world, double depth_share) {
+  std::vector<double> reach;
+  for (const RigidBody& b : world.bodies) {
+    double thinnest = kInf;
+    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
+    reach.push_back(std::isfinite(thinnest) ? depth_share * thinnest : 0.0);
+  }
+  return reach;
+}
 
 }  // namespace
+
+FaultSettings FaultSettings::forModel(ContactModel model) {
+  FaultSettings s;
+  s.energy_repaid_within = model == ContactModel::TimeStepping ? 1 : 0;
+  return s;
+}
 
 std::string Fault::describe() const {
   return "numerical failure at t = " + number(time) + " s (step " + std::to_string(step) +
@@ -48,7 +68,11 @@ std::string Fault::describe() const {
 }
 
 FaultCheck::FaultCheck(const World& world, FaultSettings settings)
-    : settings_(settings), gravity_(world.gravity) {
+    : settings_(settings),
+      gravity_(world.gravity),
+      motion_(world, correctionReach(world, settings.depth_share)),
+      energy_(world, settings.energy_gain_share, settings.energy_drift_m, settings.energy_repaid_within),
+      last_time_(world.time) {
   double scale = 0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& b = world.bodies[i];
@@ -134,6 +158,36 @@ std::optional<Fault> FaultCheck::deepPenetration(const World& world,
   return f;
 }
 
+std::optional<Fault> FaultCheck::unexplainedMotion(const World& world) {
+  const double dt = world.time - last_time_;
+  last_time_ = world.time;
+  std::optional<UnexplainedMotion> m = motion_.afterStep(world, dt);
+  if (!m) return std::nullopt;
+  Fault f;
+  f.kind = Fault::Kind::UnexplainedMotion;
+  f.bodies.push_back(world.bodies[m->body].name);
+  f.detail = "unexplained motion: body " + inQuotes(f.bodies[0]) + " moved by up to " + number(m->moved) +
+             " m in one step, where its speeds and the position correction allow " + number(m->allowed) +
+             " m; try a smaller dt_s";
+  return f;
+}
+
+std::optional<Fault> FaultCheck::energyGain(const World& world) {
+  std::optional<EnergyGain> g = energy_.afterStep(world);
+  if (!g) return std::nullopt;
+  Fault f;
+  f.kind = Fault::Kind::EnergyGain;
+  f.detail = "energy gain: the total rose " + number(g->total - g->lowest) +
+             " J above the lowest it reached (tolerance " + number(g->tolerance) + " J) in a scene with " +
+             "nothing that adds energy";
+  if (g->body >= 0) {
+    f.bodies.push_back(world.bodies[g->body].name);
+    f.detail += "; body " + inQuotes(f.bodies[0]) + " gained the most";
+  }
+  f.detail += "; try a smaller dt_s";
+  return f;
+}
+
 // A stage ran in the last step when its timer moved. The pipeline checks nothing between its
 // stages, so this is as close as a fault can be pinned without a hook inside the step.
 std::string FaultCheck::stagesRun(const std::vector<StageTime>& profile) {
@@ -148,10 +202,18 @@ std::string FaultCheck::stagesRun(const std::vector<StageTime>& profile) {
 
 std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& pipeline, long step) {
   std::string stages = stagesRun(pipeline.profile());
+  // Every check runs every step (each keeps its running state); the first fault found is reported.
   std::optional<Fault> f = nonFinite(world);
-  if (!f) f = runawayEnergy(world);
-  if (!f) f = deepPenetration(world, pipeline.contacts());
-  if (!f) return std::nullopt;
+  if (f) return record(*f, world, step, stages);
+  std::optional<Fault> checks[] = {unexplainedMotion(world), runawayEnergy(world),
+                                   deepPenetration(world, pipeline.contacts()), energyGain(world)};
+  for (std::optional<Fault>& c : checks)
+    if (c) return record(*c, world, step, stages);
+  return std::nullopt;
+}
+
+std::optional<Fault> FaultCheck::record(Fault fault, const World& world, long step, const std::string& stages) {
+  std::optional<Fault> f = std::move(fault);
   f->time = world.time;
   f->step = step;
   f->stages = stages;
@@ -160,12 +222,18 @@ std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& p
   return f;
 }
 
+long FaultCheck::total() const {
+  long n = 0;
+  for (long c : counts_) n += c;
+  return n;
+}
+
 std::string FaultCheck::summary() const {
   if (total() == 0) return "";
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on a chain of string + string.
   std::string out = std::to_string(total());
   out.append(total() == 1 ? " step" : " steps").append(" with numerical faults:");
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < static_cast<int>(Fault::Kind::Count); ++k)
     if (counts_[k] > 0) out.append(" ").append(std::to_string(counts_[k])).append(" ").append(kKindNames[k]).append(",");
   out.back() = ';';
   return out.append(" the first: ").append(first_->describe());

@@ -1,5 +1,6 @@
-// Numerical faults at run time (the third tier of errors: bad input and missing files come first): a NaN or infinite state,
-// runaway energy, or penetration beyond a limit. Checked after every step, so a fault is reported
+// Numerical faults at run time (the third tier of errors, after bad input and missing files): a
+// NaN or infinite state, runaway energy, penetration beyond a limit, a body moved farther than its
+// velocities allow (motion_check.h), or energy gained in a passive scene (energy_check.h). Checked after every step, so a fault is reported
 // the step it happens, with the bodies, the time and the stages that ran in that step, instead of
 // being rendered as garbage. The simulator stops on the first fault unless told to keep going;
 // either way every fault is counted, for the closing summary.
@@ -10,6 +11,8 @@
 #include <vector>
 
 #include "dynamics/contact.h"
+#include "dynamics/energy_check.h"
+#include "dynamics/motion_check.h"
 #include "dynamics/pipeline.h"
 #include "dynamics/world.h"
 
@@ -26,10 +29,21 @@ struct FaultSettings {
   // pieces. The tunnelling bound keeps a sub-step's closing below a quarter of the thinnest piece,
   // so a healthy run stays well under a half.
   double depth_share = 0.5;
+  // Energy gained above the running minimum (energy_check.h): this share of the scene's energy
+  // scale, plus what lifting every moving body by `energy_drift_m` takes (position correction
+  // returns what drift took; values measured on every scene, see energy_check.h).
+  double energy_gain_share = 1e-3;
+  double energy_drift_m = 1e-4;
+  // Steps within which a model may pay energy back (energy_check.h): 1 for the time-stepping
+  // model, whose bounces come one step late; 0 for the Baraff model.
+  int energy_repaid_within = 0;
+
+  // The settings for a run of this contact model.
+  static FaultSettings forModel(ContactModel model);
 };
 
 struct Fault {
-  enum class Kind { NonFinite, RunawayEnergy, DeepPenetration };
+  enum class Kind { NonFinite, RunawayEnergy, DeepPenetration, UnexplainedMotion, EnergyGain, Count };
   Kind kind = Kind::NonFinite;
   double time = 0;                   // s: the end of the step where it was found
   long step = 0;                     // 1-based step index
@@ -51,7 +65,7 @@ class FaultCheck {
   std::optional<Fault> afterStep(const World& world, const Pipeline& pipeline, long step);
 
   long count(Fault::Kind kind) const { return counts_[static_cast<int>(kind)]; }
-  long total() const { return counts_[0] + counts_[1] + counts_[2]; }
+  long total() const;
   const std::optional<Fault>& first() const { return first_; }
   // "3 faults: 2 runaway energy (first at t = ...), ..."; empty when there were none.
   std::string summary() const;
@@ -60,8 +74,11 @@ class FaultCheck {
   std::optional<Fault> nonFinite(const World& world) const;
   std::optional<Fault> runawayEnergy(const World& world) const;
   std::optional<Fault> deepPenetration(const World& world, const std::vector<Contact>& contacts) const;
+  std::optional<Fault> unexplainedMotion(const World& world);
+  std::optional<Fault> energyGain(const World& world);
   double energyOf(const RigidBody& body, int index) const;
   std::string stagesRun(const std::vector<StageTime>& profile);
+  std::optional<Fault> record(Fault fault, const World& world, long step, const std::string& stages);
 
   FaultSettings settings_;
   std::vector<Eigen::Vector3d> start_x_;   // m: each body's start, the zero of its potential energy
@@ -71,7 +88,10 @@ class FaultCheck {
   std::vector<double> thinnest_;           // m: each body's thinnest piece (inf for planes)
   Eigen::Vector3d gravity_;
   std::vector<double> stage_seconds_;      // s: the stage timers after the previous step
-  long counts_[3] = {0, 0, 0};
+  MotionCheck motion_;
+  EnergyCheck energy_;
+  double last_time_ = 0;                   // s: the world's time after the previous step
+  long counts_[static_cast<int>(Fault::Kind::Count)] = {};
   std::optional<Fault> first_;
 };
 

@@ -14,6 +14,7 @@ void BaraffModel::step(World& world, const StepSettings& settings, SharedStages&
   const double start_time = world.time;
   const double done = tuning::kStepRemainder * settings.dt;
   double remaining = settings.dt;
+  if (shared.has_contacts) correction_.startStep(world);
   for (int i = 0; i < tuning::kMaxSubsteps && remaining > done; ++i) {
     world.time = start_time + (settings.dt - remaining);
     remaining -= substep(world, settings, shared, remaining);
@@ -79,9 +80,11 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     shared.contacts_fresh = false;
   }
   shared.timed(Correct, [&] {
-    const int moved = correctPenetration(world, shared.contacts, settings.contact.tolerance_m);
-    counters.projections += moved;
-    if (moved > 0) shared.contacts_fresh = false;
+    const CorrectionCount n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m,
+                                                  shared.body_radius);
+    counters.projections += n.moved;
+    counters.capped_projections += n.capped;
+    if (n.moved > 0) shared.contacts_fresh = false;
   });
   return taken;
 }

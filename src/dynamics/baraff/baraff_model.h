@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dynamics/baraff/back_step.h"
+#include "dynamics/baraff/drift_correction.h"
 #include "dynamics/baraff/resting_forces.h"
 #include "dynamics/baraff/tunnelling_bound.h"
 #include "dynamics/body_snapshot.h"
@@ -35,6 +36,7 @@ class BaraffModel final : public ContactModelStep {
   RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
   TunnellingBound tunnelling_;
   BackStepper back_step_;
+  DriftCorrection correction_;
   BodySnapshot start_state_;       // the state at the sub-step's start, for back-stepping
   std::vector<Contact> contacts_end_;
   std::vector<PiecePair> pairs_end_;

@@ -1,14 +1,43 @@
 #include "dynamics/baraff/drift_correction.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/position_projection.h"
 
 namespace tumble {
+namespace {
 
-int correctPenetration(World& world, const std::vector<Contact>& contacts, double tol) {
+struct Pose {
+  Eigen::Vector3d x;
+  Eigen::Quaterniond q;
+};
+
+// How far a body's points moved at most from `before` to `after` (r: the body's radius).
+double pointsMoved(const Pose& before, const RigidBody& after, double r) {
+  const double turn = 2 * std::acos(std::min(1.0, std::abs(before.q.dot(after.q))));
+  return (after.x - before.x).norm() + 2 * r * std::sin(0.5 * turn);
+}
+
+}  // namespace
+
+void DriftCorrection::startStep(const World& world) {
+  if (reach_.size() != world.bodies.size()) {
+    reach_.clear();
+    for (const RigidBody& b : world.bodies) {
+      double thinnest = std::numeric_limits<double>::infinity();
+      for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
+      reach_.push_back(0.5 * thinnest);   // FaultSettings::depth_share of the thinnest piece
+    }
+  }
+  used_.assign(world.bodies.size(), 0.0);
+}
+
+CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact>& contacts, double tol,
+                                         const std::vector<double>& body_radius) {
   // Once per pair of bodies, all its points together: the four corners of a face resting too deep
   // share one depth and are lifted together, and a landing edge is lifted by turning about the
   // resting one rather than by lifting both.
@@ -29,14 +58,27 @@ int correctPenetration(World& world, const std::vector<Contact>& contacts, doubl
   // Pairs are projected in the order their first too-deep point was detected (deterministic).
   std::sort(pushes.begin(), pushes.end(), [](const Push& x, const Push& y) { return x.first_seen < y.first_seen; });
   std::vector<const Contact*> points;
-  int moved = 0;
+  CorrectionCount count;
   for (const Push& p : pushes) {
     const auto& [begin, end] = grouped.groups[p.group];
     points.clear();
     for (std::size_t k = begin; k < end; ++k) points.push_back(&contacts[grouped.order[k]]);
-    if (projectPair(world, points, tol)) ++moved;
+    const int a = points.front()->a, b = points.front()->b;
+    const Pose before_a{world.bodies[a].x, world.bodies[a].q}, before_b{world.bodies[b].x, world.bodies[b].q};
+    if (!projectPair(world, points, tol)) continue;
+    const double moved_a = pointsMoved(before_a, world.bodies[a], body_radius[a]);
+    const double moved_b = pointsMoved(before_b, world.bodies[b], body_radius[b]);
+    if (used_[a] + moved_a > reach_[a] || used_[b] + moved_b > reach_[b]) {
+      world.bodies[a].x = before_a.x, world.bodies[a].q = before_a.q;
+      world.bodies[b].x = before_b.x, world.bodies[b].q = before_b.q;
+      ++count.capped;
+      continue;
+    }
+    used_[a] += moved_a;
+    used_[b] += moved_b;
+    ++count.moved;
   }
-  return moved;
+  return count;
 }
 
 }  // namespace tumble

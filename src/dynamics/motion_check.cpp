@@ -1,0 +1,46 @@
+#include "dynamics/motion_check.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+MotionCheck::MotionCheck(const World& world, std::vector<double> allowance) : allowance_(std::move(allowance)) {
+  for (const RigidBody& body : world.bodies) {
+    double r = 0;
+    for (const ConvexPiece& piece : body.pieces)
+      for (const Eigen::Vector3d& v : piece.vertices) r = std::max(r, v.norm());
+    radius_.push_back(r);
+    last_.push_back(stateOf(body));
+  }
+}
+
+MotionCheck::State MotionCheck::stateOf(const RigidBody& body) {
+  if (body.is_static) return {body.x, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), body.q};
+  return {body.x, body.velocity(), body.angularVelocity(), body.q};
+}
+
+std::optional<UnexplainedMotion> MotionCheck::afterStep(const World& world, double dt) {
+  std::optional<UnexplainedMotion> worst;
+  double worst_excess = 0;
+  const double g = world.gravity.norm();
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& body = world.bodies[i];
+    const State was = last_[i], now = stateOf(body);
+    last_[i] = now;
+    if (body.fixedByScene()) continue;
+    // Every point of the body moves by at most |dx| + 2 r sin(theta / 2), theta the turn.
+    const double turn = 2 * std::acos(std::min(1.0, std::abs(was.q.dot(now.q))));
+    const double moved = (now.x - was.x).norm() + 2 * radius_[i] * std::sin(0.5 * turn);
+    const double speed = std::max(was.v.norm(), now.v.norm()) + g * dt +
+                         std::max(was.w.norm(), now.w.norm()) * radius_[i];
+    const double allowed = speed * dt + allowance_[i];
+    if (moved - allowed > worst_excess) {
+      worst_excess = moved - allowed;
+      worst = UnexplainedMotion{static_cast<int>(i), moved, allowed};
+    }
+  }
+  return worst;
+}
+
+}  // namespace tumble

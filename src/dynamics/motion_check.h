@@ -1,0 +1,42 @@
+// A run-time check for motion no velocity explains: a step may move a body's points no farther
+// than its speeds allow, (|v| + |g| dt + |w| r) dt with the larger of each speed at the step's
+// two ends, plus what the position correction may move it by — at most the deepest overlap the
+// fault check lets pass (half the body's thinnest piece), since a correction only removes overlap.
+// A teleport (a body moved metres in one step while its velocity stays small) exceeds this; a
+// fall, a bounce, a spin or an impact mid-step does not.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+#include "dynamics/world.h"
+
+namespace tumble {
+
+struct UnexplainedMotion {
+  int body = -1;
+  double moved = 0;     // m: the farthest any point of the body moved in the step (bound)
+  double allowed = 0;   // m
+};
+
+class MotionCheck {
+ public:
+  // `allowance` (m, per body): how far the position correction may move it within one step.
+  MotionCheck(const World& world, std::vector<double> allowance);
+  // The body whose points moved farthest beyond what its speeds allow over the step of `dt`
+  // seconds that led to `world`, if any; then remembers `world` as the next step's start.
+  std::optional<UnexplainedMotion> afterStep(const World& world, double dt);
+
+ private:
+  struct State {
+    Eigen::Vector3d x, v, w;
+    Eigen::Quaterniond q;
+  };
+  static State stateOf(const RigidBody& body);
+  std::vector<double> radius_, allowance_;
+  std::vector<State> last_;
+};
+
+}  // namespace tumble
