@@ -26,12 +26,11 @@ TEST_CASE("spike into a crack, time stepping: no teleport, no energy gain, no ov
   dropSpike(ContactModel::TimeStepping);
 }
 
-// A known failure of the Baraff model (docs/hard-cases.md): after an impact at t = 0.696 s the
-// spike turns at 7.5 rad/s and a vertex of its turning corner sinks 9 mm into a wedge within one
-// sub-step. Back-stepping takes it for the resting point it is near (within the landing radius)
-// sinking by drift and leaves it to the drift correction, which lifts the spike 9 mm: the total
-// energy rises 0.044 J above the lowest it reached (1.5 % of the 3 J in play; the fault check's
-// tolerance is 0.0055 J) and the run stops with an energy-gain fault (c772bc3, 2026-11-24).
+// A known failure of the Baraff model (docs/hard-cases.md): an impact at t = 0.696 s leaves the
+// spike turning at 7.5 rad/s, the next step ends with a vertex 9 mm deep in a wedge, and the drift
+// correction lifts it out: the total energy rises 0.044 J above the lowest it reached (1.5 % of
+// the 3 J in play; the fault check's tolerance is 0.0055 J) and the run stops with an energy-gain
+// fault (c772bc3, 2026-11-24).
 TEST_CASE("spike into a crack, Baraff: no teleport, no energy gain, no overlap above 1 mm",
           "[contact][sharp][!shouldfail]") {
   dropSpike(ContactModel::Baraff);
