@@ -8,7 +8,11 @@
 //    and turn by the smallest displacement, weighted by mass and inertia, that does it: with J the
 //    normal rows of the touching points and M the pair's mass matrix, M^-1 J^T p with p the
 //    least-squares, least-norm solution of J M^-1 J^T p = depth - tol/2 (the pseudo-inverse copes
-//    with redundant points, whose rows are dependent).
+//    with redundant points, whose rows are dependent). A displacement that would move a body's
+//    points farther than turning it about an axis half its thinnest piece away needs (nearly
+//    dependent rows with targets that disagree) is refused: then only the too-deep points are
+//    lifted, the others left free, and if that too is out of proportion the pair moves straight
+//    out along the deepest point's normal.
 //
 // Why turn: pushed out by its deepest point, a box landing one edge was lifted off its resting
 // edge too and fell the gap, gaining m g d at every landing (rocking on its face was fed that way

@@ -26,12 +26,11 @@ TEST_CASE("spike into a crack, time stepping: no teleport, no energy gain, no ov
   dropSpike(ContactModel::TimeStepping);
 }
 
-// A known failure of the Baraff model (docs/hard-cases.md): an impact at t = 0.696 s leaves the
-// spike turning at 7.5 rad/s, the next step ends with a vertex 9 mm deep in a wedge, and the drift
-// correction lifts it out: the total energy rises 0.044 J above the lowest it reached (1.5 % of
-// the 3 J in play; the fault check's tolerance is 0.0055 J) and the run stops with an energy-gain
-// fault (c772bc3, 2026-11-24).
+// The Baraff model failed here until the drift correction refused displacements out of proportion
+// to the lift (position_projection.h): the correction of a 1.4 um overlap between the spike's
+// corner and a wedge, two touching points close together with targets that disagree, turned the
+// spike 9 mm into the ground, and lifting it out added 0.044 J (1.5 % of the 3 J in play).
 TEST_CASE("spike into a crack, Baraff: no teleport, no energy gain, no overlap above 1 mm",
-          "[contact][sharp][!shouldfail]") {
+          "[contact][sharp]") {
   dropSpike(ContactModel::Baraff);
 }

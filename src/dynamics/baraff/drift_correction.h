@@ -6,10 +6,10 @@
 //
 // Its reach is bounded: within one step the corrections may move a body's points by no more, in
 // all, than the deepest overlap the fault check lets pass (half its thinnest piece; fault_check.h).
-// In a jammed cluster the corrections of one sub-step can undo another's, and summed over the
-// sub-steps of one step they moved a piece of the pile 0.26 m and turned it 29 degrees while its
-// speed was 2 m/s: a teleport. A projection that would pass a body's bound is not made (counted);
-// the pair stays within the deep-penetration limit, or the fault check reports it.
+// Summed over the sub-steps of one step, corrections once moved a piece of the pile 0.26 m and
+// turned it 29 degrees while its speed was 2 m/s (single projections out of proportion to their
+// lift, which position_projection.cpp now refuses). The bound keeps any such case within what the
+// fault check tolerates: a projection that would pass a body's reach is not made (counted).
 #pragma once
 
 #include <vector>
