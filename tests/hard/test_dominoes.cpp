@@ -76,13 +76,15 @@ TEST_CASE("dominoes: all 30 fall, in order, at dt/2", "[hard][dominoes]") { chec
 
 // The least-squares speed over dominoes 5-30, fall times interpolated within the step. A known
 // failure, and a fragile figure: 1.19 % at d1ee62c (2026-11-23), 0.75 % at 0a8f771 (2026-11-23),
-// 1.56 % at f3ae70d (2026-11-23, the drift projection), and 1.96 % at def6d4b (2026-11-24: 1.49024
-// against 1.46165 m/s), where only islands too large to pivot go to the velocity-level solve.
+// 1.56 % at f3ae70d (2026-11-23, the drift projection), 1.96 % at def6d4b (2026-11-24: 1.49024
+// against 1.46165 m/s), where only islands too large to pivot go to the velocity-level solve, and
+// 2.67 % at 570eaf9 (2026-11-24: 1.50088 against 1.46191 m/s), where the drift correction refuses
+// displacements out of proportion to the lift.
 // Also sending pivoting solves that stop short there gave 0.35 %, then 1.37 % after a change at
 // rounding level only (5be4f35, 2026-11-24), then 7.5 % with dynamic-friction failures left to
 // boxed friction: the chain amplifies small differences in its resting solves to percents of its
 // wave speed. Until the agreement holds within 1 % under such changes, it stays marked.
-TEST_CASE("dominoes: the wave speed agrees within 1 % between dt and dt/2 (reached: 1.96 %)",
+TEST_CASE("dominoes: the wave speed agrees within 1 % between dt and dt/2 (reached: 2.67 %)",
           "[hard][dominoes][!shouldfail]") {
   double coarse = waveSpeed(runAt(1)), fine = waveSpeed(runAt(2));
   INFO("wave speed " << coarse << " m/s at dt, " << fine << " m/s at dt/2: " << 100 * (coarse / fine - 1) << " %");
