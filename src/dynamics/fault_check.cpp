@@ -10,13 +10,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double radius(const RigidBody& body) {
-  double r = 0;
-  for (const ConvexPiece& piece : body.pieces)
-    for (const Eigen::Vector3d& v : piece.vertices) r = std::max(r, v.norm());
-  return r;
-}
-
 std::string number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", x);
@@ -42,18 +35,6 @@ const char* kKindNames[] = {"non-finite state", "runaway energy", "deep penetrat
                             "energy gain"};
 static_assert(sizeof kKindNames / sizeof kKindNames[0] == static_cast<int>(Fault::Kind::Count));
 
-// How far the position correction may move each body in a step: the deepest overlap that is not
-// itself a fault.
-std::vector<double> correctionReach(const World& world, double depth_share) {
-  std::vector<double> reach;
-  for (const RigidBody& b : world.bodies) {
-    double thinnest = kInf;
-    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
-    reach.push_back(std::isfinite(thinnest) ? depth_share * thinnest : 0.0);
-  }
-  return reach;
-}
-
 }  // namespace
 
 FaultSettings FaultSettings::forModel(ContactModel model) {
@@ -70,19 +51,17 @@ std::string Fault::describe() const {
 FaultCheck::FaultCheck(const World& world, FaultSettings settings)
     : settings_(settings),
       gravity_(world.gravity),
-      motion_(world, correctionReach(world, settings.depth_share)),
+      extents_(extentsOf(world)),
+      motion_(world, extents_, settings.depth_share),
       energy_(world, settings.energy_gain_share, settings.energy_drift_m, settings.energy_repaid_within),
       last_time_(world.time) {
   double scale = 0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& b = world.bodies[i];
     start_x_.push_back(b.x);
-    double thinnest = kInf;
-    for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
-    thinnest_.push_back(thinnest);
     start_energy_.push_back(b.is_static ? 0 : b.kineticEnergy());
     start_total_ += start_energy_.back();
-    if (!b.is_static) scale += b.kineticEnergy() + b.mass * gravity_.norm() * radius(b);
+    if (!b.is_static) scale += b.kineticEnergy() + b.mass * gravity_.norm() * extents_[i].radius;
   }
   // The last term only keeps the limit above rounding when nothing moves and nothing falls.
   energy_limit_ = settings_.energy_growth * scale + 1e-9 * (1 + scale);
@@ -140,7 +119,7 @@ std::optional<Fault> FaultCheck::deepPenetration(const World& world,
   const Contact* worst = nullptr;
   double worst_share = settings_.depth_share, limit = 0;
   for (const Contact& c : contacts) {
-    double thinner = std::min(thinnest_[c.a], thinnest_[c.b]);
+    double thinner = std::min(extents_[c.a].thinnest, extents_[c.b].thinnest);
     if (!std::isfinite(thinner) || c.depth <= 0) continue;
     if (c.depth / thinner > worst_share) {
       worst = &c;

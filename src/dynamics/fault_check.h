@@ -1,8 +1,8 @@
 // Numerical faults at run time (the third tier of errors, after bad input and missing files): a
 // NaN or infinite state, runaway energy, penetration beyond a limit, a body moved farther than its
-// velocities allow (motion_check.h), or energy gained in a passive scene (energy_check.h). Checked after every step, so a fault is reported
-// the step it happens, with the bodies, the time and the stages that ran in that step, instead of
-// being rendered as garbage. The simulator stops on the first fault unless told to keep going;
+// velocities allow (motion_check.h), or energy gained in a passive scene (energy_check.h).
+// Checked after every step, so a fault is reported the step it happens, with the bodies, the time
+// and the stages that ran in that step, instead of being rendered as garbage. The simulator stops on the first fault unless told to keep going;
 // either way every fault is counted, for the closing summary.
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/contact.h"
 #include "dynamics/energy_check.h"
 #include "dynamics/motion_check.h"
@@ -85,9 +86,9 @@ class FaultCheck {
   std::vector<double> start_energy_;       // J: per body
   double energy_limit_ = 0;                // J: above the start total
   double start_total_ = 0;                 // J
-  std::vector<double> thinnest_;           // m: each body's thinnest piece (inf for planes)
   Eigen::Vector3d gravity_;
   std::vector<double> stage_seconds_;      // s: the stage timers after the previous step
+  std::vector<BodyExtent> extents_;        // each body's radius and thinnest piece (inf for planes)
   MotionCheck motion_;
   EnergyCheck energy_;
   double last_time_ = 0;                   // s: the world's time after the previous step

@@ -5,13 +5,11 @@
 
 namespace tumble {
 
-MotionCheck::MotionCheck(const World& world, std::vector<double> allowance) : allowance_(std::move(allowance)) {
-  for (const RigidBody& body : world.bodies) {
-    double r = 0;
-    for (const ConvexPiece& piece : body.pieces)
-      for (const Eigen::Vector3d& v : piece.vertices) r = std::max(r, v.norm());
-    radius_.push_back(r);
-    last_.push_back(stateOf(body));
+MotionCheck::MotionCheck(const World& world, const std::vector<BodyExtent>& extents, double depth_share) {
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    radius_.push_back(extents[i].radius);
+    allowance_.push_back(std::isfinite(extents[i].thinnest) ? depth_share * extents[i].thinnest : 0.0);
+    last_.push_back(stateOf(world.bodies[i]));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/world.h"
 
 namespace tumble {
@@ -23,8 +24,9 @@ struct UnexplainedMotion {
 
 class MotionCheck {
  public:
-  // `allowance` (m, per body): how far the position correction may move it within one step.
-  MotionCheck(const World& world, std::vector<double> allowance);
+  // The position correction may move a body within one step by `depth_share` of its thinnest
+  // piece (the deepest overlap the fault check lets pass).
+  MotionCheck(const World& world, const std::vector<BodyExtent>& extents, double depth_share);
   // The body whose points moved farthest beyond what its speeds allow over the step of `dt`
   // seconds that led to `world`, if any; then remembers `world` as the next step's start.
   std::optional<UnexplainedMotion> afterStep(const World& world, double dt);

@@ -27,14 +27,11 @@ void pushOut(RigidBody& A, RigidBody& B, const Contact& deepest, double tol) {
 // Whether moving a body by dx and turning it by dtheta moves its points farther than lifting one
 // of its points by `lift` needs: a turn about an axis at least half its thinnest piece from that
 // point moves no point by more than lift (r / (thinnest / 2) + 1), r the body's radius.
-bool reachesTooFar(const RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta, double lift) {
+bool reachesTooFar(const RigidBody& body, const BodyExtent& extent, const Eigen::Vector3d& dx,
+                   const Eigen::Vector3d& dtheta, double lift) {
   if (body.is_static) return false;
-  double r = 0, thinnest = INFINITY;
-  for (const ConvexPiece& piece : body.pieces) {
-    thinnest = std::min(thinnest, piece.thickness());
-    for (const Eigen::Vector3d& v : piece.vertices) r = std::max(r, v.norm());
-  }
-  return dx.norm() + dtheta.norm() * r > lift * (r / (0.5 * thinnest) + 1);
+  const double r = extent.radius;
+  return dx.norm() + dtheta.norm() * r > lift * (r / (0.5 * extent.thinnest) + 1);
 }
 
 struct Displacement {
@@ -62,10 +59,12 @@ std::optional<Displacement> leastNormDisplacement(const World& world, const Rigi
 
 }  // namespace
 
-bool projectPair(World& world, const std::vector<const Contact*>& points, double tol) {
+bool projectPair(World& world, const std::vector<const Contact*>& points, double tol,
+                 const std::vector<BodyExtent>& extents) {
   if (points.empty()) return false;
   RigidBody& A = world.bodies[points.front()->a];
   RigidBody& B = world.bodies[points.front()->b];
+  const BodyExtent &extent_a = extents[points.front()->a], &extent_b = extents[points.front()->b];
   if (A.inv_mass + B.inv_mass <= 0) return false;
   ContactRows rows, deep_rows;   // normal rows only: of every touching point; of the too-deep ones
   std::vector<double> lift, deep_lift;
@@ -97,7 +96,8 @@ bool projectPair(World& world, const std::vector<const Contact*>& points, double
   // straight out.
   const double deepest_lift = deepest->depth - 0.5 * tol;
   auto proportionate = [&](const Displacement& m) {
-    return !reachesTooFar(A, m.dx_a, m.dtheta_a, deepest_lift) && !reachesTooFar(B, m.dx_b, m.dtheta_b, deepest_lift);
+    return !reachesTooFar(A, extent_a, m.dx_a, m.dtheta_a, deepest_lift) &&
+           !reachesTooFar(B, extent_b, m.dx_b, m.dtheta_b, deepest_lift);
   };
   std::optional<Displacement> move = leastNormDisplacement(world, A, B, rows, lift);
   if (!move) return false;

@@ -25,6 +25,7 @@
 
 #include <vector>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/contact.h"
 #include "dynamics/world.h"
 
@@ -33,6 +34,7 @@ namespace tumble {
 // `points`: the contacts of one pair of bodies, any depth. Moves the two bodies' x and q (never P
 // or L: no kinetic energy is added). Returns false when no point was deeper than tol or the pair
 // cannot move (both static).
-bool projectPair(World& world, const std::vector<const Contact*>& points, double tol);
+bool projectPair(World& world, const std::vector<const Contact*>& points, double tol,
+                 const std::vector<BodyExtent>& extents);
 
 }  // namespace tumble

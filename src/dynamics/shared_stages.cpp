@@ -25,13 +25,8 @@ SharedStages::SharedStages(const World& world)
       min_thickness(detector.thinnestPiece()),
       sleep(world),
       wrenches(world.bodies.size()) {
-  for (const RigidBody& body : world.bodies) {
-    double radius = 0;
-    for (const ConvexPiece& piece : body.pieces) {
-      for (const Eigen::Vector3d& v : piece.vertices) radius = std::max(radius, v.norm());
-    }
-    body_radius.push_back(radius);
-  }
+  extents = extentsOf(world);
+  for (const BodyExtent& e : extents) body_radius.push_back(e.radius);
   for (const char* name : kStageNames) profile.push_back({name});
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/contact_detection.h"
 #include "dynamics/contact_solve_common.h"
 #include "dynamics/integrator.h"
@@ -63,6 +64,7 @@ struct SharedStages {
   ContactDetector detector;
   const bool has_contacts;      // something can touch: the contact stages run
   const double min_thickness;   // m: the thinnest piece of any body
+  std::vector<BodyExtent> extents;   // each body's radius and thinnest piece
   std::vector<double> body_radius;   // m: each body's farthest vertex from its centre of mass
   SleepKeeper sleep;
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/contact_detection.h"
 
 namespace tumble {
@@ -23,11 +24,7 @@ std::vector<StartOverlap> findStartOverlaps(const World& world, double tolerance
     double& d = deepest[{std::min(c.a, c.b), std::max(c.a, c.b)}];
     d = std::max(d, c.depth);
   }
-  auto thinnest = [&](int body) {
-    double t = std::numeric_limits<double>::infinity();   // a plane has no thickness
-    for (const ConvexPiece& piece : world.bodies[body].pieces) t = std::min(t, piece.thickness());
-    return t;
-  };
+  auto thinnest = [&](int body) { return extentOf(world.bodies[body]).thinnest; };   // inf for a plane
   std::vector<StartOverlap> out;
   for (const auto& [pair, depth] : deepest)
     out.push_back({pair.first, pair.second, depth, depth_share * std::min(thinnest(pair.first), thinnest(pair.second))});

@@ -55,7 +55,7 @@ TEST_CASE("projection: a face sunk evenly is lifted straight up to half the tole
   const Eigen::Quaterniond q0 = cube.q;
   std::vector<Contact> contacts = contactsOf(world);
   REQUIRE(contacts.size() == 4);
-  REQUIRE(projectPair(world, pointers(contacts), kTol));
+  REQUIRE(projectPair(world, pointers(contacts), kTol, extentsOf(world)));
   auto [left, right] = lowestBySide(cube);
   INFO("lowest corners: " << left << ", " << right);
   CHECK(left == Approx(-0.5 * kTol).margin(1e-12));
@@ -75,7 +75,7 @@ TEST_CASE("projection: a landing edge is lifted by turning about the resting edg
   const double z0 = cube.x.z();
   std::vector<Contact> contacts = contactsOf(world);
   REQUIRE(contacts.size() == 4);
-  REQUIRE(projectPair(world, pointers(contacts), kTol));
+  REQUIRE(projectPair(world, pointers(contacts), kTol, extentsOf(world)));
   auto [left, right] = lowestBySide(cube);
   INFO("resting edge " << left << " m, landing edge " << right << " m, centre rose " << cube.x.z() - z0 << " m");
   // The turn is solved to first order in its angle (1e-4 rad): second-order terms are ~1e-8 m.
@@ -91,6 +91,6 @@ TEST_CASE("projection: nothing deeper than the tolerance, nothing moves", "[proj
   world.bodies[1].x.z() = 0.5 - 0.5 * kTol;
   const World before = world;
   std::vector<Contact> contacts = contactsOf(world);
-  CHECK_FALSE(projectPair(world, pointers(contacts), kTol));
+  CHECK_FALSE(projectPair(world, pointers(contacts), kTol, extentsOf(world)));
   CHECK(world.bodies[1].x == before.bodies[1].x);
 }

@@ -81,7 +81,7 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   }
   shared.timed(Correct, [&] {
     const CorrectionCount n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m,
-                                                  shared.body_radius);
+                                                  shared.extents);
     counters.projections += n.moved;
     counters.capped_projections += n.capped;
     if (n.moved > 0) shared.contacts_fresh = false;

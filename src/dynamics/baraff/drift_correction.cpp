@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/position_projection.h"
@@ -24,20 +23,10 @@ double pointsMoved(const Pose& before, const RigidBody& after, double r) {
 
 }  // namespace
 
-void DriftCorrection::startStep(const World& world) {
-  if (reach_.size() != world.bodies.size()) {
-    reach_.clear();
-    for (const RigidBody& b : world.bodies) {
-      double thinnest = std::numeric_limits<double>::infinity();
-      for (const ConvexPiece& piece : b.pieces) thinnest = std::min(thinnest, piece.thickness());
-      reach_.push_back(0.5 * thinnest);   // FaultSettings::depth_share of the thinnest piece
-    }
-  }
-  used_.assign(world.bodies.size(), 0.0);
-}
+void DriftCorrection::startStep(const World& world) { used_.assign(world.bodies.size(), 0.0); }
 
 CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact>& contacts, double tol,
-                                         const std::vector<double>& body_radius) {
+                                         const std::vector<BodyExtent>& extents) {
   // Once per pair of bodies, all its points together: the four corners of a face resting too deep
   // share one depth and are lifted together, and a landing edge is lifted by turning about the
   // resting one rather than by lifting both.
@@ -65,10 +54,11 @@ CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact
     for (std::size_t k = begin; k < end; ++k) points.push_back(&contacts[grouped.order[k]]);
     const int a = points.front()->a, b = points.front()->b;
     const Pose before_a{world.bodies[a].x, world.bodies[a].q}, before_b{world.bodies[b].x, world.bodies[b].q};
-    if (!projectPair(world, points, tol)) continue;
-    const double moved_a = pointsMoved(before_a, world.bodies[a], body_radius[a]);
-    const double moved_b = pointsMoved(before_b, world.bodies[b], body_radius[b]);
-    if (used_[a] + moved_a > reach_[a] || used_[b] + moved_b > reach_[b]) {
+    if (!projectPair(world, points, tol, extents)) continue;
+    const double moved_a = pointsMoved(before_a, world.bodies[a], extents[a].radius);
+    const double moved_b = pointsMoved(before_b, world.bodies[b], extents[b].radius);
+    // The reach: half the thinnest piece, FaultSettings::depth_share of it.
+    if (used_[a] + moved_a > 0.5 * extents[a].thinnest || used_[b] + moved_b > 0.5 * extents[b].thinnest) {
       world.bodies[a].x = before_a.x, world.bodies[a].q = before_a.q;
       world.bodies[b].x = before_b.x, world.bodies[b].q = before_b.q;
       ++count.capped;

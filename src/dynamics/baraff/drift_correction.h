@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "dynamics/body_extent.h"
 #include "dynamics/contact.h"
 #include "dynamics/world.h"
 
@@ -31,11 +32,10 @@ class DriftCorrection {
   // Projects every pair of bodies with a contact deeper than `tolerance_m`, once per pair with all
   // its points together, in the order their first too-deep point appears in `contacts`.
   CorrectionCount correct(World& world, const std::vector<Contact>& contacts, double tolerance_m,
-                          const std::vector<double>& body_radius);
+                          const std::vector<BodyExtent>& extents);
 
  private:
-  std::vector<double> reach_;   // m: per body, half its thinnest piece
-  std::vector<double> used_;    // m: how far this step's corrections have moved its points
+  std::vector<double> used_;    // m: how far this step's corrections have moved each body's points
 };
 
 }  // namespace tumble

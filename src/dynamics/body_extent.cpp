@@ -1,0 +1,23 @@
+#include "dynamics/body_extent.h"
+
+#include <algorithm>
+
+namespace tumble {
+
+BodyExtent extentOf(const RigidBody& body) {
+  BodyExtent e;
+  for (const ConvexPiece& piece : body.pieces) {
+    e.thinnest = std::min(e.thinnest, piece.thickness());
+    for (const Eigen::Vector3d& v : piece.vertices) e.radius = std::max(e.radius, v.norm());
+  }
+  return e;
+}
+
+std::vector<BodyExtent> extentsOf(const World& world) {
+  std::vector<BodyExtent> out;
+  out.reserve(world.bodies.size());
+  for (const RigidBody& body : world.bodies) out.push_back(extentOf(body));
+  return out;
+}
+
+}  // namespace tumble
