@@ -19,13 +19,16 @@ struct ContactSolveStats {
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
 };
 
-// An impact in which no point approaches faster than this settles: no touching point may leave
-// faster than it did before (baraff/impulse_propagation.cpp, settleSlowImpact), and back-stepping
-// does not time landings this slow (baraff/back_step.cpp): they settle whenever they are found.
-// 0.08 m/s: a lift-off that slow rises 0.3 mm and is back within 16 ms; it is the speed below
-// which bounces are made inelastic at the default step (2 g dt, dt = 1/240 s), but fixed, not
-// scaled with dt: scaled, it made the domino wave 15 % faster at dt than at dt/2.
-inline double settleSpeed(const ContactSettings& s) { return 80 * s.resting_speed_m_s; }
+// When an impact's lift-offs settle (baraff/impulse_propagation.cpp): a lift-off that gravity
+// ends within `within_s` is not kept, and a lift-off slower than `slack_m_s` is none. 4 dt is the
+// flight of the slowest bounce the step resolves (minBounceSpeed below: up at 2 g dt, back after
+// 4 dt); a swing shorter than that is below what the step can follow. The slack is a tenth of the
+// resting speed: slower than that, a point is at rest for every stage.
+struct SettleRule {
+  double within_s = 0;
+  double slack_m_s = 0;
+};
+inline SettleRule settleRule(const ContactSettings& s, double dt) { return {4 * dt, 0.1 * s.resting_speed_m_s}; }
 
 // A bounce slower than what gravity takes away in about two steps cannot leave the surface for a
 // whole step: resolved elastically it would come back every step (v -> e v - g dt has the fixed

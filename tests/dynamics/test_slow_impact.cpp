@@ -1,7 +1,11 @@
-// A landing edge while the opposite edge rests (impulse_propagation.cpp, settleSlowImpact): at
+// A landing edge while the opposite edge rests (impulse_propagation.cpp, settleShortLiftOffs): at
 // speed, Newton's law turns the box about the landing edge and lifts the resting one (a rocking
-// block); slower than settleSpeed (0.08 m/s, contact_solve_common.h) the impact settles and nothing
-// lifts off, so rocking ends instead of chattering at the contact tolerance.
+// block); when gravity would bring the lifted edge back within 4 dt (settleRule,
+// contact_solve_common.h) the impact settles and nothing lifts off, so rocking ends instead of
+// chattering at the contact tolerance. For the unit cube turning about an edge the lifted edge
+// falls back at 3 g / 4 (gravity's moment m g a / 2 over the edge's moment of inertia 2 m a^2 / 3,
+// times the arm a): a lift at w / 4 (the test below) is back after 2 (w / 4) / (3 g / 4) = 2 w / 3 g,
+// under 4 dt = 16.7 ms (dt = 1/240 s) for a landing slower than 0.245 m/s.
 #include <catch2/catch.hpp>
 
 #include "dynamics/contact_detection.h"
@@ -39,7 +43,7 @@ Landing land(double speed) {
   out.energy_before = cube.kineticEnergy();
   ContactSolveStats stats;
   const double min_bounce = 2 * 9.81 / 240;
-  resolveCollisions(world, contacts, settings, min_bounce, stats);
+  resolveCollisions(world, contacts, settings, min_bounce, 1.0 / 240, stats);
   out.energy_after = cube.kineticEnergy();
   out.landing_vn = -INFINITY;
   out.resting_vn = -INFINITY;
@@ -52,8 +56,8 @@ Landing land(double speed) {
 
 }  // namespace
 
-TEST_CASE("slow impact: a landing edge slower than the settle speed stops the box, nothing lifts off", "[impulse]") {
-  const Landing l = land(0.05);   // below settleSpeed, 0.08 m/s
+TEST_CASE("slow impact: a landing edge whose lift-off would be back within 4 dt stops the box, nothing lifts off", "[impulse]") {
+  const Landing l = land(0.2);   // the lifted edge would be back after 13.6 ms < 16.7 ms
   INFO("landing edge " << l.landing_vn << " m/s, resting edge " << l.resting_vn << " m/s");
   CHECK(std::abs(l.landing_vn) < 1e-9);
   CHECK(std::abs(l.resting_vn) < 1e-9);
@@ -61,7 +65,7 @@ TEST_CASE("slow impact: a landing edge slower than the settle speed stops the bo
 }
 
 TEST_CASE("slow impact: a fast landing edge still turns the box about it and lifts the resting edge", "[impulse]") {
-  const Landing l = land(0.5);
+  const Landing l = land(0.5);   // the lifted edge would be back after 34 ms > 16.7 ms
   INFO("landing edge " << l.landing_vn << " m/s, resting edge " << l.resting_vn << " m/s");
   CHECK(std::abs(l.landing_vn) < 1e-9);
   // Angular momentum about the landing edge is kept (the impulse acts there, and it does not slip):

@@ -52,10 +52,11 @@ double BackStepper::firstContact(World& world, const StepSettings& settings, dou
       before = std::max(before, s.depth);
       touched_here |= s.depth >= -tol && !trial.lifting[j] && (s.point - end.point).squaredNorm() <= near * near;
     }
-    // A landing slower than settleSpeed is not timed: the next sub-step's impulse settles it
-    // whenever it came (impulse_propagation.cpp), and timing every slow corner that settles in a
-    // pile cut its steps into about a hundred sub-steps.
-    if (before >= -tol && (touched_here || -normalVelocity(world, end) <= settleSpeed(settings.contact))) continue;
+    // Every landing that approaches (faster than the resting speed) is timed, however slow: a
+    // block's rocking is the same law at every size, and a 5 cm block's corners land at a few
+    // cm/s. Not timing landings below a fixed 0.08 m/s saved a third of the sub-steps in a pile,
+    // and cut a 15 cm block's rocking to half of Housner's ratio at its third landing.
+    if (before >= -tol && (touched_here || -normalVelocity(world, end) <= settings.contact.resting_speed_m_s)) continue;
     if (!offending.empty() && offending.back().pair == trial.end_pairs[i]) continue;
     Watch w{trial.end_pairs[i], before >= -tol, near, {}};
     if (w.landing)

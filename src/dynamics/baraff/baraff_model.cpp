@@ -33,7 +33,8 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     bool hit = false;
     const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
     shared.timed(Collide, [&] {
-      hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, counters.contacts);
+      hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, settings.dt,
+                               counters.contacts);
     });
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
   }

@@ -15,7 +15,7 @@ ContactClass classify(const World& world, const Contact& c, const ContactSetting
 }
 
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                       double min_bounce_speed, ContactSolveStats& stats) {
+                       double min_bounce_speed, double dt, ContactSolveStats& stats) {
   // Every touching contact takes part, resting ones too: an impact is passed on through what it
   // presses against. Islands are independent; within one, impulse_propagation.h says how the
   // impact travels pair by pair while each pair's points are solved together.
@@ -30,7 +30,7 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
   }
   if (!any) return false;
   for (const std::vector<const Contact*>& island : splitIntoIslands(world, set))
-    propagateImpulses(world, island, s, min_bounce_speed, stats);
+    propagateImpulses(world, island, s, min_bounce_speed, dt, stats);
   return true;
 }
 

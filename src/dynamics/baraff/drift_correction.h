@@ -1,8 +1,9 @@
 // The Baraff model's drift correction: residual penetration deeper than the tolerance is removed
 // by moving and turning the two bodies of each pair, the smallest displacement (weighted by mass
 // and inertia) that lifts the pair's too-deep points back within the tolerance
-// (position_projection.h). Only positions move, never velocities, so no kinetic energy is added
-// (unlike a Baumgarte term, which pushes bodies apart with speed).
+// (position_projection.h). Only positions move, so no speed is added (unlike a Baumgarte term,
+// which pushes bodies apart with speed); and where a projection raises the pair's energy (a lift
+// out of drift that took none), the gain is paid from the pair's kinetic energy (the .cpp).
 //
 // Its reach is bounded: within one step the corrections may move a body's points by no more, in
 // all, than the deepest overlap the fault check lets pass (half its thinnest piece; fault_check.h).

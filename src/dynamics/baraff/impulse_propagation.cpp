@@ -86,47 +86,97 @@ void newtonImpact(World& world, const std::vector<const Contact*>& points, const
   applyNewtonImpulses(world, points, vn, e, 0, false, stats);
 }
 
-// A slow impact settles. Newton's law at a landing edge turns the body about that edge and lifts
-// the edge it rested on (a rocking block: Housner 1963); that is right, and at speed the rocking
-// dies out by a constant factor per landing, but it never ends: as the lift-offs shrink to the
-// contact tolerance, each landing found within the tolerance starts the next, and a box on its
-// face chattered for ever at about 5 mrad/s. When no point approached faster than `settle_below`
-// (m/s; propagateImpulses uses settleSpeed, contact_solve_common.h), no touching point may leave faster than it did before the impact: the
-// normal velocities are set to max(v-, 0) by the least-norm normal impulses that do it. Kept only
-// if it adds no energy and leaves nothing approaching.
-void settleSlowImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
-                      double settle_below) {
-  const double slack = 1e-3 * settle_below;   // a lift-off or approach slower than this is none
-  double fastest = 0, lifted = 0;
-  ContactRows normals;   // one normal row per point
-  Eigen::VectorXd change(static_cast<Eigen::Index>(points.size()));
+// An impact whose lift-offs cannot last settles. Newton's law at a landing edge turns the body
+// about that edge and lifts the edge it rested on (a rocking block: Housner 1963); that is right,
+// and the rocking dies out by a constant factor per landing, but it never ends (a Zeno sequence,
+// like a bouncing ball's): as the lift-offs shrink to the contact tolerance, each landing found
+// within the tolerance starts the next, and a box on its face chattered for ever at about
+// 5 mrad/s. So a lift-off is kept only if it lasts: gravity, with the points the impact did not
+// lift held where they are, must not bring every lifted point back within `settle_within`
+// seconds. That is a law of the motion, not of its scale: the rocking of a 5 cm block and of a
+// 5 m one settles when its swings get shorter than the step can follow, and not before (a fixed
+// speed below which impacts settled cut a 15 cm block's rocking short at its third landing).
+// To settle, the touching points' normal velocities are set to max(v-, 0) by the least-norm
+// normal impulses that do it; kept only if it adds no energy and leaves nothing approaching.
+struct LiftOff {
+  ContactRows normals;             // one normal row per point
+  std::vector<double> target;      // per point: max(v-, 0), the most it may leave at
+  std::vector<int> lifted, held;   // points leaving faster than their target, and the rest
+  std::vector<ContactRow> holds;   // the held points' normal and (with friction) tangent rows
+};
+
+LiftOff measureLiftOff(const World& world, const std::vector<const Contact*>& points,
+                       const std::vector<double>& vn, double slack) {
+  LiftOff l;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    fastest = std::min(fastest, vn[i]);
-    normals.addContact(world, *points[i], false);
-    const double now = rowVelocity(world, normals.rows.back()), target = std::max(vn[i], 0.0);
-    change[static_cast<Eigen::Index>(i)] = target - now;
-    lifted = std::max(lifted, now - target);
+    l.normals.addContact(world, *points[i], false);
+    l.target.push_back(std::max(vn[i], 0.0));
+    const bool lifted = rowVelocity(world, l.normals.rows.back()) - l.target.back() > slack;
+    (lifted ? l.lifted : l.held).push_back(static_cast<int>(i));
   }
-  if (fastest < -settle_below || lifted <= slack) return;
+  ContactRows holds;
+  for (int i : l.held) holds.addContact(world, *points[static_cast<std::size_t>(i)], true);
+  l.holds = std::move(holds.rows);
+  return l;
+}
+
+// Whether gravity brings every lifted point back within `within` seconds. For half of it gravity's
+// impulse acts on the impact's bodies while the held points keep their velocities, normal and
+// (where they have friction) tangential: the least-norm impulses along their rows that undo what
+// gravity did to them. (Held only along the normal, a rocking block's pivot would slide and its
+// lifted corner fall back several times too soon.) A lifted point that at the
+// half no longer leaves faster than its target, slowing at least that fast, is back by the end.
+// Bodies pressing on these from outside the impact, and spin's own accelerations, are left out:
+// the answer decides only whether a lift-off is long enough to keep.
+bool liftOffsShort(World& world, const std::vector<const Contact*>& points, const LiftOff& l, double within) {
+  Momenta before(world, points);
+  const std::vector<ContactRow>& held = l.holds;
+  std::vector<double> held_was;
+  for (const ContactRow& r : held) held_was.push_back(rowVelocity(world, r));
+  for (int b : before.bodies) world.bodies[b].P += world.bodies[b].mass * world.gravity * (0.5 * within);
+  if (!held.empty()) {
+    Eigen::VectorXd undo(static_cast<Eigen::Index>(held.size()));
+    for (std::size_t k = 0; k < held.size(); ++k)
+      undo[static_cast<Eigen::Index>(k)] = held_was[k] - rowVelocity(world, held[k]);
+    const Eigen::VectorXd f =
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(delassus(world, held)).solve(undo);
+    if (f.allFinite()) applyAlongRows(world, held, f);
+  }
+  bool back = true;
+  for (int i : l.lifted) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    back &= rowVelocity(world, l.normals.rows[k]) <= l.target[k];
+  }
+  before.restore(world);
+  return back;
+}
+
+void settleShortLiftOffs(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
+                         const SettleRule& rule) {
+  const LiftOff l = measureLiftOff(world, points, vn, rule.slack_m_s);
+  if (l.lifted.empty() || !liftOffsShort(world, points, l, rule.within_s)) return;
   Momenta before(world, points);
   const double energy = before.energy(world);
-  const std::vector<ContactRow>& rows = normals.rows;
+  const std::vector<ContactRow>& rows = l.normals.rows;
+  Eigen::VectorXd change(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    change[static_cast<Eigen::Index>(k)] = l.target[k] - rowVelocity(world, rows[k]);
   const Eigen::VectorXd f = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(delassus(world, rows)).solve(change);
   if (!f.allFinite()) return;
   applyAlongRows(world, rows, f);
   bool approaching = false;
-  for (const ContactRow& row : rows) approaching |= rowVelocity(world, row) < -slack;
+  for (const ContactRow& row : rows) approaching |= rowVelocity(world, row) < -rule.slack_m_s;
   if (approaching || before.energy(world) > energy * (1 + kEnergySlack)) before.restore(world);
 }
 
 }  // namespace
 
 void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats, double settle_below) {
+                   double restitution_scale, ContactSolveStats& stats, const SettleRule* settle) {
   std::vector<double> vn;
   for (const Contact* c : points) vn.push_back(normalVelocity(world, *c));
   newtonImpact(world, points, vn, min_bounce_speed, restitution_scale, stats);
-  if (settle_below > 0) settleSlowImpact(world, points, vn, settle_below);
+  if (settle) settleShortLiftOffs(world, points, vn, *settle);
 }
 
 namespace {
@@ -166,7 +216,7 @@ bool sharesMovingBody(const World& world, const PairImpact& p, const PairImpact&
 }  // namespace
 
 void propagateImpulses(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
-                       double min_bounce_speed, ContactSolveStats& stats) {
+                       double min_bounce_speed, double dt, ContactSolveStats& stats) {
   std::vector<PairImpact> pairs = groupByPair(island);
   for (PairImpact& p : pairs) p.approach = approachOf(world, p);
   const int n = static_cast<int>(pairs.size());
@@ -174,20 +224,20 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
   // are capped so a pinched body cannot bounce for ever; inelastic rounds converge like
   // Gauss-Seidel on the inelastic impulse LCP, and the cap only stops a slow one.
   const int elastic_rounds = 4 * n + 4, max_rounds = 16 * n + 16;
-  const double settle_below = settleSpeed(s);
+  const SettleRule settle = settleRule(s, dt);
   for (int round = 0; round < max_rounds; ++round) {
     // The pair approaching fastest (first in island order on ties: deterministic).
     int k = 0;
     for (int i = 1; i < n; ++i)
       if (pairs[i].approach < pairs[k].approach) k = i;
     if (pairs[k].approach >= -s.resting_speed_m_s) return;
-    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, stats, settle_below);
+    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, stats, &settle);
     for (PairImpact& p : pairs)
       if (sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.
-  resolveImpact(world, island, min_bounce_speed, 0.0, stats, settle_below);
+  resolveImpact(world, island, min_bounce_speed, 0.0, stats, &settle);
 }
 
 }  // namespace tumble

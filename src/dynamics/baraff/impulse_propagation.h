@@ -32,18 +32,19 @@ namespace tumble {
 
 // Resolves one island of touching contacts (bodies that touch, directly or through others) so that
 // afterwards no contact approaches faster than settings.resting_speed_m_s. Impacts slower than
-// `min_bounce_speed` (m/s) get no restitution (see Pipeline).
+// `min_bounce_speed` (m/s) get no restitution (see Pipeline); lift-offs too short for a step of
+// `dt` to follow settle (settleRule, contact_solve_common.h).
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
-                       const ContactSettings& settings, double min_bounce_speed,
+                       const ContactSettings& settings, double min_bounce_speed, double dt,
                        ContactSolveStats& stats);
 
 // One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every
 // normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
 // the impulses; e is scaled by `restitution_scale` in [0, 1]. Never adds kinetic energy (see the
 // .cpp: Newton's law with friction can, Kane's paradox).
-// With settle_below > 0 (m/s), an impact slower than that then settles: no touching point leaves
-// faster than it did before (see the .cpp).
+// With a settle rule, an impact whose lift-offs gravity would end within the rule's time then
+// settles: no touching point leaves faster than it did before (see the .cpp).
 void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats, double settle_below = 0);
+                   double restitution_scale, ContactSolveStats& stats, const SettleRule* settle = nullptr);
 
 }  // namespace tumble
