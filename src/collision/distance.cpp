@@ -141,11 +141,14 @@ PieceDistance distance(const HullView& a, const HullView& b) {
       case 3: closestOnTriangle(next); break;
       default: closestOnTetrahedron(next); break;
     }
+    if (next.size == 4) {   // the origin is inside: they overlap
+      s = next;
+      break;
+    }
     const Eigen::Vector3d v_next = next.closest();
     if (!(v_next.squaredNorm() < v2)) break;   // no progress: rounding
     s = next;
     v = v_next;
-    if (s.size == 4) break;                    // the origin is inside: they overlap
   }
   PieceDistance out;
   for (int i = 0; i < s.size; ++i) {
