@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "collision/first_touch.h"
+#include "collision/narrow_phase.h"
 
 namespace tumble {
 
@@ -50,6 +51,46 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
   contacts.resize(kept);
   pairs.resize(kept);
   return dropped;
+}
+
+long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
+                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance) {
+  const std::size_t found = contacts.size();
+  long added = 0;
+  ContactManifold m;
+  for (std::size_t i = 0; i < found; ++i) {
+    const PiecePair pair = pairs[i];
+    if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;   // each pair of pieces once
+    const Contact& first = contacts[i];
+    const CollisionHull& ha = detector.hull(pair.piece_a);
+    const CollisionHull& hb = detector.hull(pair.piece_b);
+    const FreeMotion ma = freeMotion(world, world.bodies[first.a], dt, gravity);
+    const FreeMotion mb = freeMotion(world, world.bodies[first.b], dt, gravity);
+    if ((ma.spin.norm() * ha.radius + mb.spin.norm() * hb.radius) * dt <= margin) continue;
+    SatCache cache;
+    if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) continue;
+    for (const ContactPoint& p : m.points) {
+      if (p.depth <= tolerance) continue;
+      const Eigen::Vector3d pa = backToStart(ma, dt, p.position + 0.5 * p.depth * m.normal);
+      const Eigen::Vector3d pb = backToStart(mb, dt, p.position - 0.5 * p.depth * m.normal);
+      const double gap = m.normal.dot(pb - pa);
+      if (gap <= tolerance) continue;
+      const Eigen::Vector3d at = 0.5 * (pa + pb);
+      bool known = false;
+      for (std::size_t k = i; k < found && pairs[k] == pair; ++k)
+        known = known || (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
+      if (known) continue;
+      Contact c = first;
+      c.point = at;
+      c.normal = m.normal;
+      c.depth = -gap;
+      c.closest_points = false;
+      contacts.push_back(c);
+      pairs.push_back(pair);
+      ++added;
+    }
+  }
+  return added;
 }
 
 }  // namespace tumble

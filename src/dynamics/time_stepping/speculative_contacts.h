@@ -32,4 +32,13 @@ namespace tumble {
 long keepReachableContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
                            std::vector<PiecePair>& pairs, double dt, bool gravity, double tolerance);
 
+// Pieces spinning fast enough to sweep more than `margin` (m) in the step may bring a feature the
+// pair's manifold does not hold (built on the features closest now) into the other within the
+// step: a spike toppling off a ridge swings a base corner onto it. Each such pair is also
+// collided where its free motion ends the step; a point found there deeper than `tolerance`, apart
+// at the start by more than it and not near a contact the pair has, becomes a speculative contact
+// of its own (carried back to the start, along the normal found at the end). Returns how many.
+long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
+                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance);
+
 }  // namespace tumble

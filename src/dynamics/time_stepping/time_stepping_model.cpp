@@ -24,6 +24,8 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
       shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_);
       keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
                             settings.contact.tolerance_m);
+      addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
+                       settings.contact.margin_m, settings.contact.tolerance_m);
     };
     shared.timed(Detect, detect);
     shared.wakeTouched(world, detect);
