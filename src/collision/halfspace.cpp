@@ -12,6 +12,7 @@ bool collideGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, doub
                    double margin_m, ContactManifold& out) {
   out.normal = -Eigen::Vector3d::UnitZ();
   out.points.clear();
+  out.closest_points = false;   // the ground's normal never turns
   // world z of a vertex is t_z + (row z of R) . v: one dot product per vertex
   const Eigen::Vector3d up_in_body = pose.linear().row(2).transpose();
   const double tz = pose.translation().z();

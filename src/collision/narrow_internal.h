@@ -10,6 +10,7 @@
 
 #include "collision/collision_hull.h"
 #include "collision/contact_manifold.h"
+#include "collision/narrow_phase.h"
 
 namespace tumble::narrow {
 
@@ -88,6 +89,11 @@ bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool re
                  double margin, ContactManifold& out);
 bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double margin,
                  ContactManifold& out);
+
+// distance.cpp: the distance between A and B (0 when they overlap) and a closest point of each,
+// by GJK; exact to rounding for separated pieces.
+// (The result type is the public one, in the working frame here.)
+PieceDistance distance(const HullView& a, const HullView& b);
 
 // manifold_reduce.cpp: keeps at most 4 points (deepest, farthest from it, then the two that
 // enlarge the support polygon most), in that order; deterministic.

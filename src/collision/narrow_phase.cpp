@@ -175,6 +175,29 @@ bool buildManifold(const PairView& p, const Choice& c, double margin, ContactMan
   return false;
 }
 
+// The feature a pair's contact was built on is tried first next time.
+void keepAxis(const Choice& c, SatCache& cache) {
+  if (c.axis == cache.axis && c.index_a == cache.index_a && c.index_b == cache.index_b) {
+    cache.last_use = SatCache::Use::Reused;
+  }
+  cache.axis = c.axis;
+  cache.index_a = c.index_a;
+  cache.index_b = c.index_b;
+}
+
+// Separated pieces whose distance is more than the SAT's best axis shows meet first at a vertex or
+// at the end of an edge: a vertex beside a face, past its edge (a tetrahedron falling past a box's
+// top edge), vertex to vertex, edge to edge beyond an end. No tested axis is their separating
+// direction, and a manifold built on the best one puts its point where nothing is near (the
+// vertex deepest along a face normal, outside that face) with that axis's normal and gap: a
+// speculative contact there stops a body that would have passed. Their contact is the one point
+// they are closest at, along the direction between the two closest points, with the true distance.
+void closestPointContact(const PieceDistance& d, ContactManifold& out) {
+  out.normal = (d.point_b - d.point_a) / d.distance;
+  out.points.assign(1, {0.5 * (d.point_a + d.point_b), -d.distance, narrow::mixFeature(4u, 0u)});
+  out.closest_points = true;
+}
+
 void toWorld(const Eigen::Isometry3d& pose, ContactManifold& m) {
   m.normal = (pose.linear() * m.normal).normalized();
   for (ContactPoint& cp : m.points) cp.position = pose * cp.position;
@@ -186,6 +209,7 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
              const Eigen::Isometry3d& pose_b, double margin_m, SatCache& cache,
              ContactManifold& out) {
   out.points.clear();
+  out.closest_points = false;
   const PairView p = makePairView(a, pose_a, b, pose_b);
   // the seed's "defining face/edge": while it still separates, nothing else need be tested
   const double cached_sep = cachedSeparation(p, cache);
@@ -197,6 +221,19 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
   const SatResult r = fullSat(p, margin_m, cache);
   cache.last_use = SatCache::Use::Miss;
   if (r.separated) return false;
+  const double sat_sep = std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
+  if (sat_sep > 0) {
+    // The SAT value is a lower bound on the distance; equal to it when the closest features are a
+    // face and what faces it, or the insides of two edges. Above it, they are not (see
+    // closestPointContact); and a pair farther than the margin is no contact at all.
+    const PieceDistance d = narrow::distance(p.a, p.b);
+    if (d.distance > margin_m) return false;
+    if (d.distance > sat_sep + narrow::kDepthAgreement * std::min(p.a.hull->size, p.b.hull->size)) {
+      closestPointContact(d, out);
+      toWorld(*p.to_world, out);
+      return true;
+    }
+  }
   Choice c = chooseFeature(r, p, cached_sep, cache);
   bool built = buildManifold(p, c, margin_m, out);
   const Choice exact = leastPenetration(r);
@@ -204,12 +241,7 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
     c = exact;
     built = buildManifold(p, c, margin_m, out);
   }
-  if (c.axis == cache.axis && c.index_a == cache.index_a && c.index_b == cache.index_b) {
-    cache.last_use = SatCache::Use::Reused;
-  }
-  cache.axis = c.axis;
-  cache.index_a = c.index_a;
-  cache.index_b = c.index_b;
+  keepAxis(c, cache);
   if (!built) return false;
   narrow::reduceManifold(out.points, out.normal);
   toWorld(*p.to_world, out);
@@ -250,6 +282,15 @@ double fullSeparation(const PairView& p, SatCache& cache) {
 }
 
 }  // namespace
+
+PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                            const Eigen::Isometry3d& pose_b) {
+  const PairView p = makePairView(a, pose_a, b, pose_b);
+  PieceDistance d = narrow::distance(p.a, p.b);
+  d.point_a = *p.to_world * d.point_a;
+  d.point_b = *p.to_world * d.point_b;
+  return d;
+}
 
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache) {

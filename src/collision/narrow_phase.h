@@ -8,6 +8,9 @@
 //   ground   the half-space z <= height is always B, the piece A: normal = (0, 0, -1).
 // The manifold is built by clipping the incident face against the reference face (face contacts)
 // or is the single closest point of two edges (edge contacts), then reduced to <= 4 points.
+// Separated pieces closest at a vertex or an edge's end, whose distance (GJK) exceeds every tested
+// axis's gap, get instead one point at their closest points, along the direction between them,
+// with the true distance (ContactManifold::closest_points); pieces farther than the margin, none.
 // Its deepest point is as deep as separation() says, within 1e-9 of the smaller piece's size, for
 // every overlapping pair, and it never reports a penetration for a pair separation() sees apart:
 // back-stepping and the projection see penetration only through it.
@@ -67,6 +70,16 @@ double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const
 // The axis is zero when no axis was valid (degenerate pieces).
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis);
+
+// The distance (m, 0 when they overlap) between A and B and a closest point of each (world), by
+// GJK (distance.cpp): exact to rounding for separated pieces; for overlapping ones the points
+// mean nothing.
+struct PieceDistance {
+  double distance = 0;
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero(), point_b = Eigen::Vector3d::Zero();
+};
+PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
+                            const Eigen::Isometry3d& pose_b);
 
 // The static ground z <= height_m (world z up). The piece is A, the ground B, so the normal is
 // (0, 0, -1); every vertex below height_m + margin_m is a contact with depth = height_m - z,

@@ -16,6 +16,9 @@ struct Contact {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();    // unit, world, from A to B
   double depth = 0;                                     // m: > 0 penetrating, < 0 separated
   double restitution = 0, friction = 0;                 // of the pair (see combineMaterials)
+  // Separated pieces closest at a vertex or an edge's end (collision/contact_manifold.h): the
+  // normal turns as they move, so the gap along it says little about whether they will meet.
+  bool closest_points = false;
 };
 
 // Material of a contact pair. Friction: geometric mean (two equal values give that value; an ice

@@ -59,6 +59,7 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
     c.depth = p.depth;
     c.restitution = combineRestitution(A.restitution, B.restitution);
     c.friction = combineFriction(A.friction, B.friction);
+    c.closest_points = m.closest_points;
     out.push_back(c);
     if (pairs) pairs->push_back(pair);
   }

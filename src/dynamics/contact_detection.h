@@ -58,6 +58,9 @@ class ContactDetector {
   // static pieces or other sleepers, and no ground test.
   void setFixed(int body, bool fixed);
 
+  // A piece's collision hull (piece ids as in PiecePair, not ground planes).
+  const CollisionHull& hull(int piece) const { return pieces_[piece].hull; }
+
   bool hasCollidablePairs() const { return has_pairs_; }
   // The thinnest width of any piece (m): infinity when there are none.
   double thinnestPiece() const { return thinnest_; }

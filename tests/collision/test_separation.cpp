@@ -133,3 +133,48 @@ TEST_CASE("collide(A, B) and collide(B, A) agree up to the normal's sign", "[nar
   }
   CHECK(contacts > 50);
 }
+
+// pieceDistance (GJK) against the same oracle, and what collide makes of pairs the SAT value
+// underestimates: one contact at the closest points, with the true distance.
+TEST_CASE("distance: GJK gives the distance and closest points of random separated boxes", "[narrow][distance]") {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1), size(0.05, 0.6);
+  int separated = 0, underestimated = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const ConvexPiece a = makeBox(Vector3d(size(rng), size(rng), size(rng)));
+    const ConvexPiece b = makeBox(Vector3d(size(rng), size(rng), size(rng)));
+    const CollisionHull ha = makeCollisionHull(a), hb = makeCollisionHull(b);
+    const Vector3d dir = Vector3d(u(rng), u(rng), u(rng)).normalized();
+    const auto xa = pose(Vector3d(u(rng), u(rng), u(rng)), Eigen::Quaterniond::UnitRandom());
+    const auto xb = pose(xa.translation() + dir * (ha.radius + hb.radius) * (0.5 + 0.7 * std::abs(u(rng))),
+                         Eigen::Quaterniond::UnitRandom());
+    SatCache cache;
+    const double s = separation(ha, xa, hb, xb, cache);
+    if (s <= 0) continue;
+    ++separated;
+    const double dist = bruteDistance(a, xa, b, xb);
+    const PieceDistance d = pieceDistance(ha, xa, hb, xb);
+    // 1e-9 m: rounding on coordinates of order 1 m, far below any contact tolerance
+    REQUIRE(d.distance == Approx(dist).margin(1e-9));
+    CHECK((d.point_b - d.point_a).norm() == Approx(dist).margin(1e-9));
+    // The closest points lie on the pieces: inside or on every face plane.
+    for (size_t f = 0; f < a.faces.size(); ++f)
+      CHECK((xa.linear() * a.face_normals[f]).dot(d.point_a - xa * a.vertices[a.faces[f][0]]) < 1e-9);
+    for (size_t f = 0; f < b.faces.size(); ++f)
+      CHECK((xb.linear() * b.face_normals[f]).dot(d.point_b - xb * b.vertices[b.faces[f][0]]) < 1e-9);
+    SatCache other;
+    const auto m = collide(ha, xa, hb, xb, dist + 1e-3, other);
+    REQUIRE(m);
+    if (dist > s + 1e-6) {
+      ++underestimated;
+      CHECK(m->closest_points);
+      REQUIRE(m->points.size() == 1);
+      CHECK(m->points[0].depth == Approx(-dist).margin(1e-9));
+      CHECK(m->normal.dot(d.point_b - d.point_a) == Approx(dist).margin(1e-9));
+    }
+    SatCache beyond;
+    CHECK_FALSE(collide(ha, xa, hb, xb, 0.99 * dist, beyond));   // farther than the margin: none
+  }
+  CHECK(separated > 200);
+  CHECK(underestimated > 20);
+}

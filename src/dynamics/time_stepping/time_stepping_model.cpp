@@ -2,6 +2,7 @@
 
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
+#include "dynamics/time_stepping/speculative_contacts.h"
 
 namespace tumble {
 
@@ -21,6 +22,10 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
     auto detect = [&] {
       bodyReach(world, shared.body_radius, dt, reach_);
       shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_);
+      keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
+                            settings.contact.tolerance_m);
+      addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
+                       settings.contact.margin_m, settings.contact.tolerance_m);
     };
     shared.timed(Detect, detect);
     shared.wakeTouched(world, detect);

@@ -1,0 +1,96 @@
+#include "dynamics/time_stepping/speculative_contacts.h"
+
+#include <algorithm>
+
+#include "collision/first_touch.h"
+#include "collision/narrow_phase.h"
+
+namespace tumble {
+
+namespace {
+
+FreeMotion freeMotion(const World& world, const RigidBody& body, double dt, bool gravity) {
+  FreeMotion m;
+  m.pose = poseOf(body);
+  if (body.is_static) return m;
+  // The velocity the body integrates with when no contact acts: gravity's impulse comes first.
+  m.velocity = body.velocity() + (gravity ? Eigen::Vector3d(world.gravity * dt) : Eigen::Vector3d::Zero());
+  m.spin = body.angularVelocity();
+  return m;
+}
+
+// A point of a body at time t of its free motion, carried back to where it is now.
+Eigen::Vector3d backToStart(const FreeMotion& m, double t, const Eigen::Vector3d& p) {
+  return m.pose * (m.at(t).inverse(Eigen::Isometry) * p);
+}
+
+}  // namespace
+
+long keepReachableContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
+                           std::vector<PiecePair>& pairs, double dt, bool gravity, double tolerance) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact c = contacts[i];
+    const PiecePair pair = pairs[i];
+    if (c.closest_points && pair.piece_b >= 0 && -c.depth > tolerance) {
+      const FreeMotion ma = freeMotion(world, world.bodies[c.a], dt, gravity);
+      const FreeMotion mb = freeMotion(world, world.bodies[c.b], dt, gravity);
+      const FirstTouch touch = firstTouch(detector.hull(pair.piece_a), ma, detector.hull(pair.piece_b), mb, dt, tolerance);
+      if (!touch.touches) continue;
+      const Eigen::Vector3d pa = backToStart(ma, touch.time, touch.point_a);
+      const Eigen::Vector3d pb = backToStart(mb, touch.time, touch.point_b);
+      c.normal = touch.normal;
+      c.point = 0.5 * (pa + pb);
+      c.depth = -std::max(touch.normal.dot(pb - pa), 0.0);
+    }
+    contacts[kept] = c;
+    pairs[kept] = pair;
+    ++kept;
+  }
+  const long dropped = static_cast<long>(contacts.size() - kept);
+  contacts.resize(kept);
+  pairs.resize(kept);
+  return dropped;
+}
+
+long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
+                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance) {
+  const std::size_t found = contacts.size();
+  long added = 0;
+  ContactManifold m;
+  for (std::size_t i = 0; i < found; ++i) {
+    const PiecePair pair = pairs[i];
+    if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;   // each pair of pieces once
+    const Contact& first = contacts[i];
+    const CollisionHull& ha = detector.hull(pair.piece_a);
+    const CollisionHull& hb = detector.hull(pair.piece_b);
+    const FreeMotion ma = freeMotion(world, world.bodies[first.a], dt, gravity);
+    const FreeMotion mb = freeMotion(world, world.bodies[first.b], dt, gravity);
+    if ((ma.spin.norm() * ha.radius + mb.spin.norm() * hb.radius) * dt <= margin) continue;
+    SatCache cache;
+    if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) continue;
+    for (const ContactPoint& p : m.points) {
+      if (p.depth <= tolerance) continue;
+      const Eigen::Vector3d pa = backToStart(ma, dt, p.position + 0.5 * p.depth * m.normal);
+      const Eigen::Vector3d pb = backToStart(mb, dt, p.position - 0.5 * p.depth * m.normal);
+      const double gap = m.normal.dot(pb - pa);
+      if (gap <= tolerance) continue;
+      const Eigen::Vector3d at = 0.5 * (pa + pb);
+      bool known = false;
+      for (std::size_t k = i; k < found && pairs[k] == pair; ++k)
+        known = known || (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
+      if (known) continue;
+      Contact c = first;
+      c.point = at;
+      c.normal = m.normal;
+      c.depth = -gap;
+      c.closest_points = false;
+      contacts.push_back(c);
+      pairs.push_back(pair);
+      ++added;
+    }
+  }
+  return added;
+}
+
+}  // namespace tumble
