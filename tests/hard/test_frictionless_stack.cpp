@@ -1,0 +1,60 @@
+// A frictionless 1000:1 stack (scenes/hard/frictionless_stack.json): a 10 m cube of 10^6 kg lands
+// on a 1 m cube of 10^3 kg standing on the ground, with no friction anywhere. Nothing pushes either
+// cube sideways, so after the landing both stay where they settled; a solver that lets the heavy
+// cube's tilt (inside the contact tolerance) lean on the light one pushes it out sideways, with
+// nothing to hold it back. Criterion: over 10 s both centres stay within 1 cm of where they were
+// 1 s after the drop (the landing is over by then: the drop takes 0.32 s), no overlap above 1 mm,
+// no run-time fault (the run stops on one).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "../dynamics/contact_scene_runner.h"
+#include "hard_run.h"
+
+using namespace tumble;
+
+namespace {
+
+// The largest distance (m) either cube's centre moves from where it was at 1 s.
+double drift(ContactModel model, double* penetration) {
+  Eigen::Vector3d settled[2];
+  bool have = false;
+  double worst = 0;
+  auto run = test::runScene("hard/frictionless_stack", 10, [&](const World& w) {
+    if (w.time < 1 - 1e-9) return;
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::Vector3d x = w.bodies[static_cast<std::size_t>(k + 1)].x;
+      if (!have) settled[k] = x;
+      worst = std::max(worst, (x - settled[k]).norm());
+    }
+    have = true;
+  }, 1, [&](Scene& s) { s.simulation.step.model = model; });
+  *penetration = run.max_penetration;
+  return worst;
+}
+
+}  // namespace
+
+// Known failures, both models (measured 2026-11-24): no overlap above 1 mm and no fault, but the
+// light cube is pushed out sideways. Time stepping: it accelerates steadily, about 1.7e-4 m/s per
+// second, along a diagonal, as from a heavy cube leaning by 1.7e-8 rad on the light one's face that
+// nothing straightens (1.1 cm in 10 s). Baraff: a kick to 1e-2 m/s between 1.3 s and 3.3 s, then a
+// slow drift (1.8 cm). The cause is not found yet.
+TEST_CASE("frictionless 1000:1 stack, time stepping: both cubes stay within 1 cm for 10 s (reached: 1.1 cm)",
+          "[hard][frictionless_stack][time_stepping][!shouldfail]") {
+  double penetration = 0;
+  const double d = drift(ContactModel::TimeStepping, &penetration);
+  INFO("largest drift " << d << " m, deepest overlap " << penetration << " m");
+  CHECK(d < 0.01);
+  CHECK(penetration < 1e-3);
+}
+
+TEST_CASE("frictionless 1000:1 stack, Baraff: both cubes stay within 1 cm for 10 s (reached: 1.8 cm)",
+          "[hard][frictionless_stack][!shouldfail]") {
+  double penetration = 0;
+  const double d = drift(ContactModel::Baraff, &penetration);
+  INFO("largest drift " << d << " m, deepest overlap " << penetration << " m");
+  CHECK(d < 0.01);
+  CHECK(penetration < 1e-3);
+}
