@@ -19,17 +19,6 @@ struct ContactSolveStats {
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
 };
 
-// When an impact's lift-offs settle (baraff/impulse_propagation.cpp): a lift-off that gravity
-// ends within `within_s` is not kept, and a lift-off slower than `slack_m_s` is none. 4 dt is the
-// flight of the slowest bounce the step resolves (minBounceSpeed below: up at 2 g dt, back after
-// 4 dt); a swing shorter than that is below what the step can follow. The slack is a tenth of the
-// resting speed: slower than that, a point is at rest for every stage.
-struct SettleRule {
-  double within_s = 0;
-  double slack_m_s = 0;
-};
-inline SettleRule settleRule(const ContactSettings& s, double dt) { return {4 * dt, 0.1 * s.resting_speed_m_s}; }
-
 // A bounce slower than what gravity takes away in about two steps cannot leave the surface for a
 // whole step: resolved elastically it would come back every step (v -> e v - g dt has the fixed
 // point g dt / (1 - e)) and never come to rest. Impacts slower than this are made inelastic.

@@ -1,7 +1,7 @@
 // A landing edge while the opposite edge rests (impulse_propagation.cpp, settleShortLiftOffs): at
 // speed, Newton's law turns the box about the landing edge and lifts the resting one (a rocking
 // block); when gravity would bring the lifted edge back within 4 dt (settleRule,
-// contact_solve_common.h) the impact settles and nothing lifts off, so rocking ends instead of
+// baraff/impulse_propagation.h) the impact settles and nothing lifts off, so rocking ends instead of
 // chattering at the contact tolerance. For the unit cube turning about an edge the lifted edge
 // falls back at 3 g / 4 (gravity's moment m g a / 2 over the edge's moment of inertia 2 m a^2 / 3,
 // times the arm a): a lift at w / 4 (the test below) is back after 2 (w / 4) / (3 g / 4) = 2 w / 3 g,

@@ -15,7 +15,7 @@
 //
 // Which impacts: the rocking is a Zeno sequence, infinitely many landings in a finite time, and
 // the tail below what the step can follow settles (a lift-off that gravity ends within 4 dt is not
-// kept: settleRule, contact_solve_common.h). Every landing whose next swing lasts 8 dt or more by
+// kept: settleRule, baraff/impulse_propagation.h). Every landing whose next swing lasts 8 dt or more by
 // the law (twice the rule's bound: the rule estimates the swing to first order) must keep
 // Housner's ratio within 1 %. The swing after a landing at omega+ is, for the rocking equation
 // linearised in the tilt (theta'' = p^2 (theta - alpha), p^2 = m g R / I_edge = 3 g / 4 R, R the

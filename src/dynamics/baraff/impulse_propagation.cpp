@@ -124,8 +124,8 @@ LiftOff measureLiftOff(const World& world, const std::vector<const Contact*>& po
 // impulse acts on the impact's bodies while the held points keep their velocities, normal and
 // (where they have friction) tangential: the least-norm impulses along their rows that undo what
 // gravity did to them. (Held only along the normal, a rocking block's pivot would slide and its
-// lifted corner fall back several times too soon.) A lifted point that at the
-// half no longer leaves faster than its target, slowing at least that fast, is back by the end.
+// lifted corner fall back several times too soon.) A lifted point that at the half no longer
+// leaves faster than its target, slowing at least that fast, is back by the end.
 // Bodies pressing on these from outside the impact, and spin's own accelerations, are left out:
 // the answer decides only whether a lift-off is long enough to keep.
 bool liftOffsShort(World& world, const std::vector<const Contact*>& points, const LiftOff& l, double within) {

@@ -30,10 +30,21 @@
 
 namespace tumble {
 
+// When an impact's lift-offs settle (resolveImpact below): a lift-off that gravity ends within
+// `within_s` is not kept, and a lift-off slower than `slack_m_s` is none. 4 dt is the flight of
+// the slowest bounce the step resolves (minBounceSpeed, contact_solve_common.h: up at 2 g dt, back
+// after 4 dt); a swing shorter than that is below what the step can follow. The slack is a tenth
+// of the resting speed: slower than that, a point is at rest for every stage.
+struct SettleRule {
+  double within_s = 0;
+  double slack_m_s = 0;
+};
+inline SettleRule settleRule(const ContactSettings& s, double dt) { return {4 * dt, 0.1 * s.resting_speed_m_s}; }
+
 // Resolves one island of touching contacts (bodies that touch, directly or through others) so that
 // afterwards no contact approaches faster than settings.resting_speed_m_s. Impacts slower than
 // `min_bounce_speed` (m/s) get no restitution (see Pipeline); lift-offs too short for a step of
-// `dt` to follow settle (settleRule, contact_solve_common.h).
+// `dt` to follow settle (settleRule).
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
                        const ContactSettings& settings, double min_bounce_speed, double dt,
                        ContactSolveStats& stats);
