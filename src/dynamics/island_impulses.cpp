@@ -1,5 +1,8 @@
 #include "dynamics/island_impulses.h"
 
+#include "dynamics/active_set_step.h"
+#include "dynamics/settings.h"
+
 namespace tumble {
 
 IslandImpulses solveIslandImpulses(const World& world, const ContactRows& rows,
@@ -9,9 +12,18 @@ IslandImpulses solveIslandImpulses(const World& world, const ContactRows& rows,
   RowGaussSeidelSettings gs;
   gs.max_sweeps = settings.max_sweeps;
   gs.tolerance = settings.tolerance;
-  RowGaussSeidelResult solved = solveRowsGaussSeidel(world, rows.rows, b, pyramidLimits(rows, island), gs, start);
+  const std::vector<RowLimit> limits = pyramidLimits(rows, island);
+  RowGaussSeidelResult solved = solveRowsGaussSeidel(world, rows.rows, b, limits, gs, start);
   ++stats.iterative_islands;
   stats.sweeps += solved.sweeps;
+  // Unconverged at the cap (a long chain of bodies under load, active_set_step.h): solve the
+  // equalities of the split Gauss-Seidel reached together, and let a few sweeps correct the split.
+  gs.max_sweeps = tuning::kActiveSetSweeps;
+  for (int round = 0; round < tuning::kActiveSetRounds && !solved.converged; ++round) {
+    ++stats.active_set_steps;
+    solved = solveRowsGaussSeidel(world, rows.rows, b, limits, gs, activeSetStep(world, rows.rows, b, limits, solved.f));
+    stats.sweeps += solved.sweeps;
+  }
   if (!solved.converged) ++stats.unconverged_sweeps;
   return {std::move(solved.f), solved.converged};
 }
