@@ -24,9 +24,9 @@ void printPipelineStats(const Pipeline& pipeline) {
                c.contacts.friction_fallbacks);
   std::fprintf(stderr,
                "  resting islands solved by Gauss-Seidel %ld (%ld after pivoting stopped short; "
-               "%ld sweeps, %ld solves at the sweep cap)\n",
+               "%ld sweeps, %ld subspace steps, %ld solves left unconverged)\n",
                c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
-               c.contacts.unconverged_sweeps);
+               c.contacts.active_set_steps, c.contacts.unconverged_sweeps);
   const SleepCounters& s = pipeline.sleepCounters();
   std::fprintf(stderr, "  sleeping: %ld islands fell asleep, %ld woke; %d bodies asleep at the end\n",
                s.islands_slept, s.islands_woken, s.asleep_now);

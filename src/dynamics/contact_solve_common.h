@@ -17,6 +17,7 @@ struct ContactSolveStats {
   long iterative_islands = 0;       // resting islands solved by Gauss-Seidel (too large to pivot)
   long iterative_fallbacks = 0;     // of those: pivoting stopped short with unusable forces
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
+  long active_set_steps = 0;        // subspace steps on islands Gauss-Seidel left unconverged
 };
 
 // A bounce slower than what gravity takes away in about two steps cannot leave the surface for a

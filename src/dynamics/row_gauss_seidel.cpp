@@ -97,6 +97,7 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
       push(d, df);
       if (d.inv_diag > 0) largest_change = std::max(largest_change, std::abs(df) / d.inv_diag);
     }
+    out.last_change = largest_change;
     if (!(largest_change > stop)) {
       out.converged = std::isfinite(largest_change);
       break;

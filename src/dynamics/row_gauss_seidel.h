@@ -42,6 +42,9 @@ struct RowGaussSeidelResult {
   Eigen::VectorXd f;     // force along each row (N)
   int sweeps = 0;
   bool converged = false;
+  // The largest change of any row's acceleration in the last sweep (NaN if one was not finite):
+  // how far from a fixed point the answer is, in the units of the tolerance.
+  double last_change = 0;
 };
 
 // `start` (if it has one entry per row) is the first guess: the time-stepping model passes the

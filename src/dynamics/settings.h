@@ -84,6 +84,14 @@ inline constexpr double kSmallIslandTolerance = 1e-12;
 // Time-stepping model: sweeps before a small island is pivoted instead (pivoting a small island
 // costs about as much as 30 sweeps over it).
 inline constexpr int kSmallIslandSweeps = 30;
+// Velocity-level Gauss-Seidel left unconverged at its cap: rounds of a subspace solve of the split it
+// reached (active_set_step.h), each followed by this many sweeps that polish it and correct the
+// split; each round costs about as much as its sweeps and iterations together.
+inline constexpr int kActiveSetRounds = 4;
+inline constexpr int kActiveSetSweeps = 20;
+// Conjugate-gradient iterations per subspace step: about the length of the longest chain of bodies
+// a load runs through (the 101-stone arch's half ring is 50).
+inline constexpr int kActiveSetIterations = 100;
 
 }  // namespace tuning
 }  // namespace tumble

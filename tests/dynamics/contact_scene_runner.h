@@ -14,6 +14,8 @@ struct SceneRun {
   double max_penetration = 0;   // m: deepest overlap of any pair (ground, static, bodies) seen
   Trajectory trajectory;        // one sample per frame
   PipelineCounters counters;
+  long faults = 0;              // steps the run-time fault check found at fault (keep_going only)
+  std::string first_fault;      // its description, empty when there was none
 };
 
 // Simulates scenes/NAME.json for `seconds` (rounded to whole frames), calling `on_step` after
@@ -21,9 +23,11 @@ struct SceneRun {
 // costly in a pile) and after the last.
 // `edit` (if set) changes the loaded scene first (another contact model, say). Sleeping is off
 // unless `edit` turns it on: the tests measure what the contact solve reaches.
+// A run-time fault (fault_check.h) stops the run with an Error, unless `keep_going`: then the run
+// goes on and the faults are counted in the result.
 SceneRun runScene(const std::string& name, double seconds,
                   const std::function<void(const World&)>& on_step = {}, int penetration_every = 1,
-                  const std::function<void(Scene&)>& edit = {});
+                  const std::function<void(Scene&)>& edit = {}, bool keep_going = false);
 
 // Deepest overlap in the world now (m, 0 when nothing overlaps), measured geometrically.
 double worldPenetration(const World& world);

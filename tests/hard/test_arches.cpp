@@ -1,0 +1,127 @@
+// Masonry arches (docs/hard-cases.md): semicircular arches of 25 and 101 convex voussoirs standing
+// on the ground by friction alone (scenes/hard/arch25.json, arch101.json, written by
+// tools/make-arch; mu = 0.5, dt = 1/100 s, clear span 18 m, joints opened by 0.1 mm). The ring is
+// thick enough for a thrust line and needs shear / normal 0.31 at its worst joint (the feet), so
+// by J. Heyman, "The Stone Skeleton" (1995), it stands: once the gaps have closed no stone may
+// move. Criteria, after every step:
+//   - no run-time fault (the simulator's fault check: a body moved farther than its speeds allow,
+//     energy risen above the lowest reached, a deep overlap; counted here, the run goes on so
+//     that the other figures are measured too);
+//   - no pair of bodies overlapping by more than 1 mm (exact separating-axis depth), the
+//     acceptance bound for overlaps;
+//   - no stone's centre moving more than 1e-3 of the span (18 mm) from where it was once the gaps
+//     had closed (0.1 s: a 0.1 mm gap closes under gravity in 5 ms, and the ring then carries its
+//     weight).
+// Both contact models. The largest energy rise above the lowest energy reached, relative to the
+// scene's energy scale (largest kinetic energy plus the range of potential energy), is printed.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "../dynamics/contact_scene_runner.h"
+
+using namespace tumble;
+
+namespace {
+
+constexpr double kSpan = 18;          // m: clear span, twice the intrados radius (tools/make-arch)
+constexpr double kSettled = 0.1;      // s: the gaps have closed
+
+struct ArchOutcome {
+  double overlap = 0;                 // m: deepest, any step
+  double centre_motion = 0;           // m: largest of any stone after kSettled
+  double energy_rise = 0;             // share of the energy scale
+  double energy_rise_j = 0, energy_scale_j = 0;
+  double wall_per_s = 0;              // s of wall time per simulated second
+  long faults = 0;                    // steps the run-time fault check found at fault
+  std::string first_fault;
+};
+
+double potentialEnergy(const World& w) {
+  double e = 0;
+  for (const RigidBody& b : w.bodies)
+    if (!b.is_static) e -= b.mass * w.gravity.dot(b.x);
+  return e;
+}
+
+ArchOutcome standArch(const std::string& name, double seconds, ContactModel model) {
+  ArchOutcome out;
+  std::vector<Eigen::Vector3d> settled;
+  double lowest = std::numeric_limits<double>::infinity(), highest_rise = 0;
+  double largest_kinetic = 0, pe_low = std::numeric_limits<double>::infinity(), pe_high = -pe_low;
+  const auto start = std::chrono::steady_clock::now();
+  auto run = test::runScene(
+      name, seconds,
+      [&](const World& w) {
+        if (w.time >= kSettled - 1e-9 && settled.empty())
+          for (const RigidBody& b : w.bodies) settled.push_back(b.x);
+        if (!settled.empty())
+          for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            out.centre_motion = std::max(out.centre_motion, (w.bodies[i].x - settled[i]).norm());
+        double kinetic = 0;
+        for (const RigidBody& b : w.bodies) kinetic += b.kineticEnergy();
+        const double pe = potentialEnergy(w);
+        largest_kinetic = std::max(largest_kinetic, kinetic);
+        pe_low = std::min(pe_low, pe), pe_high = std::max(pe_high, pe);
+        lowest = std::min(lowest, kinetic + pe);
+        highest_rise = std::max(highest_rise, kinetic + pe - lowest);
+      },
+      1, [&](Scene& s) { s.simulation.step.model = model; }, true);
+  out.wall_per_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / seconds;
+  out.overlap = run.max_penetration;
+  out.faults = run.faults;
+  out.first_fault = run.first_fault;
+  out.energy_rise_j = highest_rise;
+  out.energy_scale_j = largest_kinetic + (pe_high - pe_low);
+  out.energy_rise = highest_rise / std::max(out.energy_scale_j, 1e-300);
+  return out;
+}
+
+void checkArch(const ArchOutcome& out) {
+  INFO("deepest overlap " << out.overlap << " m, centre motion after " << kSettled << " s " << out.centre_motion
+                          << " m (" << out.centre_motion / kSpan << " of the span), energy rise "
+                          << out.energy_rise_j << " J (" << out.energy_rise << " of the scale, " << out.energy_scale_j << " J), " << out.wall_per_s << " s wall per s, "
+                          << out.faults << " steps at fault; the first: " << out.first_fault);
+  CHECK(out.faults == 0);
+  CHECK(out.overlap < 1e-3);
+  CHECK(out.centre_motion < 1e-3 * kSpan);
+}
+
+}  // namespace
+
+// The time-stepping model stands both arches for the full 20 s (about 1 and 30 s of wall time on
+// the 2-core machine; 25 stones: 0.49 mm of motion, overlaps of 0.082 mm, 2026-11-24). Before the
+// subspace steps of active_set_step.h the 25-stone arch sagged 0.35 m in 20 s and the 101-stone
+// one sank 0.2 m in 5 s.
+TEST_CASE("arch of 25 voussoirs, time stepping: stands 20 s, no overlap above 1 mm, no fault", "[hard][arch][time_stepping]") {
+  checkArch(standArch("hard/arch25", 20, ContactModel::TimeStepping));
+}
+
+// Known failure: the arch stands (centre motion 6.2 mm, overlap 0.21 mm, 2026-11-24) but the
+// position correction lifts stones out of the overlaps Gauss-Seidel leaves: the total energy rises
+// above the lowest it reached by 3.4 kJ at the first fault (the fault check allows 0.32 kJ), on
+// nearly every step.
+TEST_CASE("arch of 101 voussoirs, time stepping: stands 20 s, no overlap above 1 mm, no fault (reached: energy-gain faults on 1990 of 2000 steps)",
+          "[hard][arch][time_stepping][!shouldfail]") {
+  checkArch(standArch("hard/arch101", 20, ContactModel::TimeStepping));
+}
+
+// The Baraff model stands the 25-stone arch for the full 20 s: 0.75 mm of motion, overlaps of
+// 0.35 mm, 0.25 s of wall time per simulated second (2026-11-24). It fell by 54 mm in 2 s before
+// the rocking block's fixes (a lift-off settles only when the step cannot follow it; resting
+// normal rows stop their drift: baraff/impulse_propagation.h, baraff/resting_forces.cpp).
+TEST_CASE("arch of 25 voussoirs, Baraff: stands 20 s, no overlap above 1 mm, no fault", "[hard][arch]") {
+  checkArch(standArch("hard/arch25", 20, ContactModel::Baraff));
+}
+
+// Known failure, 0.3 s horizon: 77-119 s of wall time per simulated second (the criterion asks at
+// most 20 s; the higher figure while a build shared the machine), and the ring falls (0.19 m in
+// 0.3 s, overlaps of 1.0 cm, 2026-11-24). Twenty sub-steps per step, each cut by back-stepping to
+// a joint that lands again.
+TEST_CASE("arch of 101 voussoirs, Baraff: stands, no overlap above 1 mm, no fault (0.3 s horizon, reached: 1.0 cm overlap, 0.19 m sag, 119 s wall per s)",
+          "[hard][arch][!shouldfail]") {
+  checkArch(standArch("hard/arch101", 0.3, ContactModel::Baraff));
+}
