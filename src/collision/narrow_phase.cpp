@@ -78,6 +78,10 @@ double cachedSeparation(const PairView& p, const SatCache& c) {
   return s;
 }
 
+// Faces whose outward normals (B's negated) agree to within about 0.8 degrees rest face on face:
+// their contact normal stays the reference face's.
+constexpr double kOppositeFaces = 0.9999;
+
 struct SatResult {
   AxisQuery face_a, face_b, edges;
   bool separated = false;
@@ -198,6 +202,37 @@ void closestPointContact(const PieceDistance& d, ContactManifold& out) {
   out.closest_points = true;
 }
 
+// Two pieces touching along edges that are parallel (the ridge of a tent of two leaning cards,
+// two wedges edge to edge) have no single contact normal: every direction between the two faces'
+// normals separates them, the SAT finds both faces equally good, and its tie-break (A's face)
+// pushed along one card's face normal, 25 degrees off the horizontal: the ridge force lifted one
+// card and pressed the other down, and the tent fell. When the faces of both pieces separate them
+// equally (within the feature-choice tolerances), touch (neither overlaps by more than the
+// absolute tolerance) and are not opposite (not resting face on face),
+// the contact's normal is the bisector of the two normals, the symmetric choice inside that range;
+// the points keep their places, their depths shifted so that the deepest is the pair's depth
+// along the bisector.
+void shareEdgeNormal(const SatResult& r, const PairView& p, const Choice& c, ContactManifold& m) {
+  if (c.axis == Axis::Edges || r.face_a.index_a < 0 || r.face_b.index_b < 0 || m.points.empty()) return;
+  const double sa = r.face_a.separation, sb = r.face_b.separation;
+  const double abs_tol = narrow::kAbsTolerance * std::min(p.a.hull->size, p.b.hull->size);
+  if (std::max(std::abs(sa), std::abs(sb)) > abs_tol) return;   // not touching: a deep overlap
+  if (std::abs(sa - sb) > narrow::kFaceRelTolerance * std::max(std::abs(sa), std::abs(sb)) + abs_tol) return;
+  const Eigen::Vector3d na = p.a.normals[r.face_a.index_a], nb = -p.b.normals[r.face_b.index_b];
+  // Opposite faces (resting face on face) keep the reference face's normal; faces more than a
+  // right angle apart do not meet at a shared edge line.
+  if (na.dot(nb) > kOppositeFaces || na.dot(nb) < 0) return;
+  const Eigen::Vector3d n = (na + nb).normalized();
+  double low_b = INFINITY, high_a = -INFINITY;
+  for (int v = 0; v < p.b.vertexCount(); ++v) low_b = std::min(low_b, n.dot(p.b.vertices[v]));
+  for (int v = 0; v < p.a.vertexCount(); ++v) high_a = std::max(high_a, n.dot(p.a.vertices[v]));
+  double deepest = -INFINITY;
+  for (const ContactPoint& cp : m.points) deepest = std::max(deepest, cp.depth);
+  const double shift = (high_a - low_b) - deepest;
+  for (ContactPoint& cp : m.points) cp.depth += shift;
+  m.normal = n;
+}
+
 void toWorld(const Eigen::Isometry3d& pose, ContactManifold& m) {
   m.normal = (pose.linear() * m.normal).normalized();
   for (ContactPoint& cp : m.points) cp.position = pose * cp.position;
@@ -243,6 +278,7 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
   }
   keepAxis(c, cache);
   if (!built) return false;
+  shareEdgeNormal(r, p, c, out);
   narrow::reduceManifold(out.points, out.normal);
   toWorld(*p.to_world, out);
   return true;

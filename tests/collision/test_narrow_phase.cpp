@@ -226,3 +226,30 @@ TEST_CASE("a box resting flat stays face-face under small tilts", "[narrow]") {
     CHECK(m->normal.z() > 0.999);
   }
 }
+
+// Two cards of a tent (0.5 x 64 x 89 mm, leaning 25 degrees each way) whose top inner edges meet,
+// parallel, 0.01 mm apart. Every direction between the two inner faces' normals separates them;
+// the contact's normal is the bisector, horizontal, and the pair's gap along it is the 0.01 mm
+// (the faces' own normals, 25 degrees off, see only 0.01 cos 25 mm and would push one card up and
+// the other down).
+TEST_CASE("parallel edges meeting (a tent's ridge): the normal bisects the two faces' normals", "[narrow]") {
+  const double t = 0.5e-3, l = 89e-3, lean = 25 * std::numbers::pi / 180, gap = 1e-5;
+  const ConvexPiece card = makeBox(Vector3d(t / 2, 32e-3, l / 2));
+  const double dx = t / 2 * std::cos(lean) + l / 2 * std::sin(lean) + gap / 2;
+  const auto left = pose({-dx, 0, l / 2}, rotation(lean, Vector3d::UnitY()));
+  const auto right = pose({dx, 0, l / 2}, rotation(-lean, Vector3d::UnitY()));
+  SatCache cache;
+  const auto m = collide(card, left, card, right, 1e-4, cache);
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(m->normal.isApprox(Vector3d(1, 0, 0), 1e-12));   // from A (left) to B (right)
+  double deepest = -INFINITY;
+  for (const ContactPoint& p : m->points) deepest = std::max(deepest, p.depth);
+  CHECK(deepest == Approx(-gap).epsilon(1e-6));
+  SECTION("the pair the other way round: the normal flips") {
+    SatCache other;
+    const auto r = collide(card, right, card, left, 1e-4, other);
+    REQUIRE(r);
+    CHECK(r->normal.isApprox(Vector3d(-1, 0, 0), 1e-12));
+  }
+}

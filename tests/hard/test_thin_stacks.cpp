@@ -1,0 +1,124 @@
+// Thin plates and tall cribs (docs/hard-cases.md), written by tools/make-thin-stacks: a two-level
+// house of playing cards (0.5 mm, 2 g, tents at 65 degrees, mu = 0.5; scenes/hard/card_house.json),
+// its smallest part, one tent on a card lying loose on the ground (tent_on_card.json), and a crib
+// tower of 102 Kapla planks, 17 levels of 6 on edge (crib102.json, dt = 1/100 s). Statics says all
+// three stand: a tent's feet need F / N = 1 / (2 tan 65) = 0.233 < mu, and the crib carries its
+// weight straight down through square patches. Criteria, after every step:
+//   - no piece's centre moving more than 1 mm from where it started (the pieces start 0.01 mm
+//     apart, so settling moves the highest plank 0.17 mm), over 2 s for the cards and 60 s for
+//     the crib;
+//   - no pair of bodies overlapping by more than 1 mm (exact separating-axis depth), the
+//     acceptance bound for overlaps;
+//   - no run-time fault (counted, so that the run goes on and the other figures are measured).
+// Both contact models. The largest energy rise above the lowest energy reached, relative to the
+// scene's energy scale, is printed.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+#include "../dynamics/contact_scene_runner.h"
+
+using namespace tumble;
+
+namespace {
+
+struct StackOutcome {
+  double overlap = 0;        // m: deepest, at the steps measured
+  double moved = 0;          // m: the largest distance of any centre from its start
+  std::string moved_most;
+  double energy_rise = 0;    // share of the energy scale
+  double wall_per_s = 0;     // s of wall time per simulated second
+  long faults = 0;
+  std::string first_fault;
+};
+
+StackOutcome standStack(const std::string& name, double seconds, ContactModel model, int overlap_every = 1) {
+  StackOutcome out;
+  std::vector<Eigen::Vector3d> start;
+  double lowest = std::numeric_limits<double>::infinity(), highest_rise = 0;
+  double largest_kinetic = 0, pe_low = lowest, pe_high = -lowest;
+  const auto began = std::chrono::steady_clock::now();
+  auto run = test::runScene(
+      "hard/" + name, seconds,
+      [&](const World& w) {
+        if (start.empty())
+          for (const RigidBody& b : w.bodies) start.push_back(b.x);
+        double kinetic = 0, potential = 0;
+        for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+          const RigidBody& b = w.bodies[i];
+          if (b.is_static) continue;
+          const double d = (b.x - start[i]).norm();
+          if (d > out.moved) out.moved = d, out.moved_most = b.name;
+          kinetic += b.kineticEnergy();
+          potential -= b.mass * w.gravity.dot(b.x);
+        }
+        largest_kinetic = std::max(largest_kinetic, kinetic);
+        pe_low = std::min(pe_low, potential), pe_high = std::max(pe_high, potential);
+        lowest = std::min(lowest, kinetic + potential);
+        highest_rise = std::max(highest_rise, kinetic + potential - lowest);
+      },
+      overlap_every, [&](Scene& s) { s.simulation.step.model = model; }, true);
+  out.wall_per_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count() / seconds;
+  out.overlap = run.max_penetration;
+  out.faults = run.faults;
+  out.first_fault = run.first_fault;
+  out.energy_rise = highest_rise / std::max(largest_kinetic + (pe_high - pe_low), 1e-300);
+  return out;
+}
+
+void checkStands(const StackOutcome& out) {
+  INFO("largest move " << out.moved << " m (" << out.moved_most << "), deepest overlap " << out.overlap
+                       << " m, energy rise " << out.energy_rise << " of the scale, " << out.wall_per_s
+                       << " s wall per s, " << out.faults << " steps at fault; the first: " << out.first_fault);
+  CHECK(out.faults == 0);
+  CHECK(out.overlap < 1e-3);
+  CHECK(out.moved < 1e-3);
+}
+
+}  // namespace
+
+TEST_CASE("one tent on a loose card, time stepping: stands 2 s, no piece moves 1 mm, no fault", "[hard][thin][time_stepping]") {
+  checkStands(standStack("tent_on_card", 2, ContactModel::TimeStepping));
+}
+
+TEST_CASE("house of cards, time stepping: stands 2 s, no piece moves 1 mm, no fault", "[hard][thin][time_stepping]") {
+  checkStands(standStack("card_house", 2, ContactModel::TimeStepping));
+}
+
+// Known failure (2026-11-24): the landing's impulses, resolved pair by pair, leave the two cards
+// of the tent spinning unequally (0.04 and 0.24 rad/s after the first step); the tent rocks, its
+// feet slide on the loose card and it falls by 0.5 s; then the card is pressed into the ground
+// (overlap faults from 0.75 s). The same tent stands on the ground.
+TEST_CASE("one tent on a loose card, Baraff: stands 2 s, no piece moves 1 mm, no fault (reached: 8.2 cm, overlap faults)",
+          "[hard][thin][!shouldfail]") {
+  checkStands(standStack("tent_on_card", 2, ContactModel::Baraff));
+}
+
+// Known failure (2026-11-24), as the tent on a loose card: the top tent, standing on the card laid
+// across the lower tents, falls (12.7 cm), with overlap faults from 0.30 s.
+TEST_CASE("house of cards, Baraff: stands 2 s, no piece moves 1 mm, no fault (reached: 12.7 cm, overlap faults)",
+          "[hard][thin][!shouldfail]") {
+  checkStands(standStack("card_house", 2, ContactModel::Baraff));
+}
+
+// The crib's 102 bodies make the exact overlap of every pair costly: measured every 10th step and
+// at the end. Known failure on a 1 s horizon (2026-11-24; the criterion asks 60 s): Gauss-Seidel
+// stops at its cap on every step even with subspace steps (a 17-level crib is a long chain of
+// redundant square patches), the planks jiggle, 2.9 mm by 1 s and 7.6 mm by 4 s, and the
+// position correction's lifts trip the energy-gain check from 0.58 s; 60 s of it collapsed the
+// tower (0.76 m) at about 10 s of wall time per simulated second.
+TEST_CASE("crib of 102 planks, time stepping: stands, no piece moves 1 mm, no fault (1 s horizon, reached: 2.9 mm, energy-gain faults)",
+          "[hard][thin][crib][time_stepping][!shouldfail]") {
+  checkStands(standStack("crib102", 1, ContactModel::TimeStepping, 10));
+}
+
+// Known failure on a 0.1 s horizon (2026-11-24): the landings of 17 levels closing their 0.01 mm
+// gaps in the first step leave two planks 5.2 mm into each other (a fault at step 1), planks move
+// 3 cm and overlap 1.4 cm within 0.1 s, at about 130 s of wall time per simulated second (the
+// resting stage pivoting islands of a few hundred contacts).
+TEST_CASE("crib of 102 planks, Baraff: stands, no piece moves 1 mm, no fault (0.1 s horizon, reached: 3 cm, 1.4 cm overlap)",
+          "[hard][thin][crib][!shouldfail]") {
+  checkStands(standStack("crib102", 0.1, ContactModel::Baraff));
+}
