@@ -19,6 +19,9 @@ namespace tumble {
 struct IslandImpulseSettings {
   int max_sweeps = 200;
   double tolerance = 1e-6;   // of the largest velocity term (row_gauss_seidel.h)
+  // Subspace rounds where the sweeps stop unconverged (island_impulses.cpp); off for a speed
+  // setting that takes an unconverged answer by choice.
+  bool subspace_rounds = true;
 };
 
 struct IslandImpulses {

@@ -65,6 +65,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
                           : settings.time_stepping_sweeps;
     gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
+    gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
     IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, stats);
     Eigen::VectorXd f = std::move(solved.p);
     if (!solved.converged && small) {
