@@ -66,11 +66,6 @@ inline constexpr double kImmediateContact = 1e-6;
 // Time-stepping model: drift projection passes per step; each reads the depths the earlier
 // pushes left. One pass cannot keep up under a load (a column of boxes sank 6-8 cm in the pile).
 inline constexpr int kProjectionPasses = 8;
-// Time-stepping model: solves of a step again at most, each with the contacts its solved motion
-// reaches that the step's contacts lack (time_stepping_model.cpp); a solve whose motion finds none
-// is final. Each round reaches one body further through a wall struck at once (a brick set moving
-// by the solve, its neighbour moved by the brick's new rows, ...); the cap bounds the cost.
-inline constexpr int kSweptResolves = 4;
 // Pivoting: passes over the friction bounds at most; the bounds settle to 1e-9 of the largest.
 inline constexpr int kMaxFrictionPasses = 12;
 inline constexpr double kFrictionTolerance = 1e-9;

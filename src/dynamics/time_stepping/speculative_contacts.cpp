@@ -73,13 +73,12 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
       if (p.depth <= tolerance) continue;
       const Eigen::Vector3d pa = backToStart(ma, dt, p.position + 0.5 * p.depth * m.normal);
       const Eigen::Vector3d pb = backToStart(mb, dt, p.position - 0.5 * p.depth * m.normal);
-      const double gap = std::max(m.normal.dot(pb - pa), 0.0);
+      const double gap = m.normal.dot(pb - pa);
+      if (gap <= tolerance) continue;
       const Eigen::Vector3d at = 0.5 * (pa + pb);
-      // Among all the pair's contacts: those swept in by an earlier call follow the list's end.
       bool known = false;
-      for (std::size_t k = 0; k < contacts.size() && !known; ++k)
-        known = pairs[k] == pair && (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size) &&
-                contacts[k].normal.dot(m.normal) > 0.99;
+      for (std::size_t k = i; k < found && pairs[k] == pair; ++k)
+        known = known || (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
       if (known) continue;
       Contact c = first;
       c.point = at;

@@ -1,7 +1,5 @@
 #include "dynamics/time_stepping/time_stepping_model.h"
 
-#include <algorithm>
-
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
 #include "dynamics/time_stepping/speculative_contacts.h"
@@ -15,31 +13,6 @@ void bodyReach(const World& world, const std::vector<double>& body_radius, doubl
     if (b.is_static) continue;
     reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
   }
-}
-
-long TimeSteppingModel::contactsOfSolvedMotion(const World& world, const StepSettings& settings, SharedStages& shared) {
-  const double dt = settings.dt;
-  long added = 0;
-  // Pairs farther apart than the detection reached: only where the solve made a body faster.
-  bodyReach(world, shared.body_radius, dt, solved_reach_);
-  bool farther = false;
-  for (std::size_t i = 0; i < solved_reach_.size(); ++i) farther = farther || solved_reach_[i] > reach_[i];
-  if (farther) {
-    shared.detector.detect(world, settings.contact, solved_contacts_, &solved_pairs_, &solved_reach_);
-    keepReachableContacts(world, shared.detector, solved_contacts_, solved_pairs_, dt, false,
-                          settings.contact.tolerance_m);
-    known_pairs_ = shared.pairs;
-    std::sort(known_pairs_.begin(), known_pairs_.end());
-    for (std::size_t i = 0; i < solved_contacts_.size(); ++i) {
-      if (std::binary_search(known_pairs_.begin(), known_pairs_.end(), solved_pairs_[i])) continue;
-      shared.contacts.push_back(solved_contacts_[i]);
-      shared.pairs.push_back(solved_pairs_[i]);
-      ++added;
-    }
-  }
-  // Gravity's impulse is in the solved velocities already.
-  return added + addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, false,
-                                  settings.contact.margin_m, settings.contact.tolerance_m);
 }
 
 void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
@@ -69,22 +42,7 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   if (shared.has_contacts) {
     const double min_bounce = minBounceSpeed(world, settings.contact, dt);
     shared.timed(Resting, [&] {
-      before_solve_.save(world);
       impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
-      // The speculative contacts above follow the motion the bodies had before the solve; the
-      // solve can set still bodies moving and spinning (a brick struck by a ball: 60 m/s and 160
-      // rad/s within the step), into neighbours the detection did not reach, and a pair held at
-      // the one point its manifold had turns another corner into its neighbour, as deep as the
-      // turn sweeps (2.4 cm in scenes/hard/debris_wall.json). So the solved motion is detected
-      // and swept again; what it finds becomes rows of its own and the step is solved again from
-      // the momenta it started with (warm-started from the answer before), until nothing new is
-      // found.
-      for (int round = 0; round < tuning::kSweptResolves; ++round) {
-        if (contactsOfSolvedMotion(world, settings, shared) == 0) break;
-        approach_.resize(shared.contacts.size(), 0.0);   // apart at the start: no bounce to give
-        before_solve_.restore(world);   // positions are as they were: only momenta changed
-        impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
-      }
     });
   }
   for (Wrench& w : shared.wrenches) w = Wrench{};

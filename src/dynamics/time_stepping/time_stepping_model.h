@@ -5,14 +5,12 @@
 //   correct     project out residual penetration                          drift_projection.h
 //   forces      gravity as an impulse                                     gravity.h
 //   resting     the contact impulses (restitution, friction pyramid)      contact_impulses.h
-//               solved again with what the solved motion sweeps into      speculative_contacts.h
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
 #pragma once
 
 #include <vector>
 
-#include "dynamics/body_snapshot.h"
 #include "dynamics/contact_model.h"
 #include "dynamics/time_stepping/contact_impulses.h"
 #include "dynamics/time_stepping/drift_projection.h"
@@ -25,18 +23,10 @@ class TimeSteppingModel final : public ContactModelStep {
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
 
  private:
-  // After a solve: the contacts its motion reaches that the set lacks (pairs beyond the detection's
-  // reach, corners the pairs' turns sweep in), appended to the shared contacts; returns how many.
-  long contactsOfSolvedMotion(const World& world, const StepSettings& settings, SharedStages& shared);
-
   ContactImpulses impulses_;
   DriftProjection projection_;
   std::vector<double> reach_;      // how far each body can travel in the step
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
-  BodySnapshot before_solve_;      // the momenta the solve starts from, for solving again
-  std::vector<double> solved_reach_;          // how far each body can travel with its solved velocity
-  std::vector<Contact> solved_contacts_;      // detected within that reach
-  std::vector<PiecePair> solved_pairs_, known_pairs_;
 };
 
 // How far each body's points can travel within a step (m; 0 for static bodies): the speculative
