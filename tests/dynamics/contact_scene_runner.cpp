@@ -49,6 +49,21 @@ double worldPenetration(const World& world) {
   return deepest;
 }
 
+void EnergyRise::add(const World& world) {
+  double kinetic = 0, potential = 0;
+  for (const RigidBody& b : world.bodies) {
+    if (b.is_static) continue;
+    kinetic += b.kineticEnergy();
+    potential -= b.mass * world.gravity.dot(b.x);
+  }
+  largest_kinetic_ = std::max(largest_kinetic_, kinetic);
+  low_potential_ = std::min(low_potential_, potential);
+  high_potential_ = std::max(high_potential_, potential);
+  const double total = kinetic + potential, scale = largest_kinetic_ + (high_potential_ - low_potential_);
+  if (scale > 0 && total > lowest_) largest_ = std::max(largest_, (total - lowest_) / scale);
+  lowest_ = std::min(lowest_, total);
+}
+
 SceneRun runScene(const std::string& name, double seconds,
                   const std::function<void(const World&)>& on_step, int penetration_every,
                   const std::function<void(Scene&)>& edit) {

@@ -12,7 +12,7 @@
 //   ball's, on a frictionless ground. Ground friction is the one horizontal force from outside,
 //   and with it the wall's lowest course is not out of play: the impact reaches it through the
 //   courses above (it slides at up to 3 m/s with time stepping, 7 m/s with the Baraff model), and
-//   friction takes 0.7 % (Baraff) to 2.2 % (time stepping) of the ball's momentum within 0.1 s,
+//   friction takes 0.7 % (Baraff) to 1.8 % (time stepping) of the ball's momentum within 0.1 s,
 //   against at most mu M g t = 848 N s, 1.4 %, of a whole wall sliding the whole time (the time-
 //   stepping model's landings press harder than the weight). That is physics, not an error, and it
 //   would hide one, so the momentum is held on a second run with the ground's friction 0, where
@@ -58,7 +58,7 @@ Eigen::Vector2d horizontalMomentum(const World& world) {
 
 Watched watch(ContactModel model, bool frictionless_ground) {
   Watched w;
-  double lowest = INFINITY, largest_kinetic = 0, low_pe = INFINITY, high_pe = -INFINITY;
+  test::EnergyRise energy;
   Eigen::Vector2d p0 = Eigen::Vector2d::Zero();
   std::vector<char> on_ground;
   auto on_step = [&](const World& world) {
@@ -72,18 +72,8 @@ Watched watch(ContactModel model, bool frictionless_ground) {
     const double depth = test::worldPenetration(world);
     if (depth > w.deepest) w.deepest = depth, w.deepest_at = world.time;
     if (depth > kOverlapBound) ++w.steps_over;
-    double kinetic = 0, potential = 0;
-    for (const RigidBody& b : world.bodies) {
-      if (b.is_static) continue;
-      kinetic += b.kineticEnergy();
-      potential -= b.mass * world.gravity.dot(b.x);
-    }
-    largest_kinetic = std::max(largest_kinetic, kinetic);
-    low_pe = std::min(low_pe, potential);
-    high_pe = std::max(high_pe, potential);
-    const double total = kinetic + potential, scale = largest_kinetic + (high_pe - low_pe);
-    if (scale > 0 && total > lowest) w.largest_rise = std::max(w.largest_rise, (total - lowest) / scale);
-    lowest = std::min(lowest, total);
+    energy.add(world);
+    w.largest_rise = energy.largest();
     if (world.time <= kMomentumWindow + 1e-9) {
       w.momentum_error = std::max(w.momentum_error, (horizontalMomentum(world) - p0).norm() / p0.norm());
       for (std::size_t i = 0; i < world.bodies.size(); ++i)
@@ -136,15 +126,16 @@ TEST_CASE("debris wall, Baraff: a steel ball through 100 fragments, no overlap a
   checkDebris(ContactModel::Baraff);
 }
 
-// Known failure (measured 2026-11-24): deepest overlap 1.1 mm (1.2 mm on the frictionless ground),
-// two steps right after the impact, between the two halves of a brick the ball sets turning at
-// about 70 rad/s within one step (0.07 rad a step); no fault, momentum kept to 1e-16 on the
-// frictionless ground. The step's rows are linear in the velocities at its start; the contacts
-// that the solved motion sweeps into are added and the step solved again (it was 2.8 cm before,
-// with a brick's halves held at one corner each), but what a turn of 0.07 rad does in one step
-// beyond that first-order row is left: about half a millimetre per step of turning at that rate.
+// Known failure (measured 2026-11-24): deepest overlap 2.4 cm (1.7 cm on the frictionless ground),
+// for 4 steps right after the impact, between the two halves of a brick; no fault, momentum kept to
+// 1e-16 on the frictionless ground. The step's contacts and their rows come from the motion before
+// the solve: bricks the solve itself sets moving at 60 m/s and turning at over 100 rad/s within the
+// step go into neighbours the detection did not reach, or turn a corner into the half beside them.
+// Detecting and sweeping the solved motion again and solving the step again with what it reaches
+// brought this to 1.0-1.3 mm, but kept the pile by Gauss-Seidel from coming to rest within 5 s
+// (test_time_stepping.cpp), so it is not in (docs/known-limits.md).
 TEST_CASE("debris wall, time stepping: a steel ball through 100 fragments, no overlap above 1 mm, no fault, "
-          "momentum kept to 1 % (reached: 1.2 mm)",
+          "momentum kept to 1 % (reached: 2.4 cm)",
           "[hard][debris][time_stepping][!shouldfail]") {
   checkDebris(ContactModel::TimeStepping);
 }
