@@ -150,8 +150,9 @@ bool sameFeature(const Choice& x, const Choice& y) {
 // face resting with a small tilt the two differ by about depth x tilt^2 / 2, far below this
 // tolerance, so the face stays; for pieces crossing deeply they differed by millimetres in either
 // direction (the prism can cut the deepest part away), and back-stepping and the projection then
-// missed the overlap or pushed too far. Rounding-sized, like the clipping tolerance: 1e-9 of the
-// smaller piece's size.
+// missed the overlap or pushed too far. Within `share` of the smaller piece's size: rounding-sized
+// (kDepthAgreement, like the clipping tolerance), or kParallelSine for a face whose normal the
+// least-penetration edge axis is (edgeAxisIsFaceNormal).
 bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView& p, double share) {
   if (m.points.empty()) return false;
   const double sat_depth = -std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
@@ -171,9 +172,9 @@ bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView&
 // leave its faces flat only to 1e-9 m, more than kDepthAgreement allows). The face's manifold,
 // every point where the faces meet, is then the contact as long as it holds the deepest point to
 // within what the axes' difference can make (kParallelSine times the size); the edge pair's one
-// point would be a single corner of it, and a face held at one corner turns into its neighbour
-// (the halves of a brick struck by a ball went 2 cm into each other). Parallel: within the sine
-// below which two edges count as parallel.
+// point would be a single corner of it, and a face held at one corner turns about it into its
+// neighbour (half the cut bricks of scenes/hard/debris_wall.json had their halves held so).
+// Parallel: within the sine below which two edges count as parallel.
 bool edgeAxisIsFaceNormal(const PairView& p, const Choice& face, const Choice& edges) {
   if (edges.axis != Axis::Edges || (face.axis != Axis::FaceA && face.axis != Axis::FaceB)) return false;
   Eigen::Vector3d axis;
