@@ -25,6 +25,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <vector>
 
 #include "../dynamics/contact_scene_runner.h"
 
