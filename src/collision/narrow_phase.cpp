@@ -154,9 +154,10 @@ bool sameFeature(const Choice& x, const Choice& y) {
 // face resting with a small tilt the two differ by about depth x tilt^2 / 2, far below this
 // tolerance, so the face stays; for pieces crossing deeply they differed by millimetres in either
 // direction (the prism can cut the deepest part away), and back-stepping and the projection then
-// missed the overlap or pushed too far. Rounding-sized, like the clipping tolerance: 1e-9 of the
-// smaller piece's size.
-bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView& p) {
+// missed the overlap or pushed too far. Within `share` of the smaller piece's size: rounding-sized
+// (kDepthAgreement, like the clipping tolerance), or kParallelSine for a face whose normal the
+// least-penetration edge axis is (edgeAxisIsFaceNormal).
+bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView& p, double share) {
   if (m.points.empty()) return false;
   const double sat_depth = -std::max({r.face_a.separation, r.face_b.separation, r.edges.separation});
   double deepest = -INFINITY;
@@ -165,8 +166,27 @@ bool agreesWithSat(const ContactManifold& m, const SatResult& r, const PairView&
   // depth is above -1e-6 m, and a face saying "0.1 mm apart" of a pair the SAT sees touching would
   // drop its resting force. (Exempting pairs that both call apart raised the pile's
   // sampled penetration from 1.1 to 6.8 mm.)
-  const double tol = narrow::kDepthAgreement * std::min(p.a.hull->size, p.b.hull->size);
+  const double tol = share * std::min(p.a.hull->size, p.b.hull->size);
   return std::abs(deepest - sat_depth) <= tol;
+}
+
+// Two edges lying in parallel faces (the joints of a brick wall, the two halves of a cut block)
+// have those faces' normal for their axis, and measure the faces' separation up to rounding: of the
+// normalised cross product, and of the mesh itself (a file's vertices written to nine decimals
+// leave its faces flat only to 1e-9 m, more than kDepthAgreement allows). The face's manifold,
+// every point where the faces meet, is then the contact as long as it holds the deepest point to
+// within what the axes' difference can make (kParallelSine times the size); the edge pair's one
+// point would be a single corner of it, and a face held at one corner turns about it into its
+// neighbour (half the cut bricks of scenes/hard/debris_wall.json had their halves held so).
+// Parallel: within the sine below which two edges count as parallel.
+bool edgeAxisIsFaceNormal(const PairView& p, const Choice& face, const Choice& edges) {
+  if (edges.axis != Axis::Edges || (face.axis != Axis::FaceA && face.axis != Axis::FaceB)) return false;
+  Eigen::Vector3d axis;
+  double unused = 0;
+  if (!narrow::edgeAxis(p.a, edges.index_a, p.b, edges.index_b, axis, unused)) return false;
+  // Both point from A to B: A's outward face normal, B's turned around.
+  const Eigen::Vector3d n = face.axis == Axis::FaceA ? p.a.normals[face.index_a] : Eigen::Vector3d(-p.b.normals[face.index_b]);
+  return axis.dot(n) > 0 && axis.cross(n).norm() < narrow::kParallelSine;
 }
 
 bool buildManifold(const PairView& p, const Choice& c, double margin, ContactManifold& out) {
@@ -272,7 +292,8 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
   Choice c = chooseFeature(r, p, cached_sep, cache);
   bool built = buildManifold(p, c, margin_m, out);
   const Choice exact = leastPenetration(r);
-  if (!sameFeature(c, exact) && !(built && agreesWithSat(out, r, p))) {
+  const double agreement = edgeAxisIsFaceNormal(p, c, exact) ? narrow::kParallelSine : narrow::kDepthAgreement;
+  if (!sameFeature(c, exact) && !(built && agreesWithSat(out, r, p, agreement))) {
     c = exact;
     built = buildManifold(p, c, margin_m, out);
   }

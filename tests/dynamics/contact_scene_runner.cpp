@@ -1,10 +1,11 @@
 #include "contact_scene_runner.h"
 
 #include <algorithm>
+#include <vector>
 
+#include "collision/aabb.h"
 #include "collision/collision_hull.h"
 #include "collision/narrow_phase.h"
-#include "dynamics/body_extent.h"
 #include "dynamics/contact_detection.h"
 #include "scene/world_builder.h"
 #include "scene/scene_loader.h"
@@ -13,33 +14,54 @@
 namespace tumble::test {
 
 double worldPenetration(const World& world) {
-  double deepest = 0;
-  // Bodies whose bounding spheres (about the centre of mass) are apart cannot overlap: the
-  // separating-axis test of every pair would cost a 100-stone arch more than its simulation.
-  const std::vector<BodyExtent> extents = extentsOf(world);
+  // Every piece's hull and box once: in a pile of a hundred bodies most pairs are far apart, and
+  // two pieces whose boxes are disjoint cannot overlap, so skipping them leaves the answer exact.
+  struct Placed {
+    std::size_t body;
+    CollisionHull hull;
+    Eigen::Isometry3d pose;
+    Aabb box;
+  };
+  std::vector<Placed> placed;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& a = world.bodies[i];
     if (a.shape == ShapeKind::Plane) continue;
-    for (const ConvexPiece& pa : a.pieces) {
-      CollisionHull ha = makeCollisionHull(pa);
-      for (std::size_t j = 0; j < world.bodies.size(); ++j) {
-        const RigidBody& b = world.bodies[j];
-        // Sleeping bodies are static only for the while: their overlaps count.
-        if (j == i || (a.fixedByScene() && b.fixedByScene())) continue;
-        if (b.shape == ShapeKind::Plane) {
-          deepest = std::max(deepest, -groundSeparation(pa, poseOf(a), b.x.z()));
-          continue;
-        }
-        if (j < i || (a.x - b.x).norm() > extents[i].radius + extents[j].radius) continue;
-        for (const ConvexPiece& pb : b.pieces) {
-          SatCache cache;
-          // For overlapping convex pieces the SAT value is minus the penetration depth.
-          deepest = std::max(deepest, -separation(ha, poseOf(a), makeCollisionHull(pb), poseOf(b), cache));
-        }
-      }
+    for (const ConvexPiece& p : a.pieces) placed.push_back({i, makeCollisionHull(p), poseOf(a), aabbOf(p, poseOf(a), 0)});
+  }
+  double deepest = 0;
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    const Placed& pa = placed[k];
+    const RigidBody& a = world.bodies[pa.body];
+    for (const RigidBody& g : world.bodies) {
+      // Sleeping bodies are static only for the while: their overlaps count.
+      if (g.shape != ShapeKind::Plane || (a.fixedByScene() && g.fixedByScene())) continue;
+      deepest = std::max(deepest, -groundSeparation(*pa.hull.piece, pa.pose, g.x.z()));
+    }
+    for (std::size_t m = k + 1; m < placed.size(); ++m) {
+      const Placed& pb = placed[m];
+      const RigidBody& b = world.bodies[pb.body];
+      if (pb.body == pa.body || (a.fixedByScene() && b.fixedByScene()) || !overlaps(pa.box, pb.box)) continue;
+      SatCache cache;
+      // For overlapping convex pieces the SAT value is minus the penetration depth.
+      deepest = std::max(deepest, -separation(pa.hull, pa.pose, pb.hull, pb.pose, cache));
     }
   }
   return deepest;
+}
+
+void EnergyRise::add(const World& world) {
+  double kinetic = 0, potential = 0;
+  for (const RigidBody& b : world.bodies) {
+    if (b.is_static) continue;
+    kinetic += b.kineticEnergy();
+    potential -= b.mass * world.gravity.dot(b.x);
+  }
+  largest_kinetic_ = std::max(largest_kinetic_, kinetic);
+  low_potential_ = std::min(low_potential_, potential);
+  high_potential_ = std::max(high_potential_, potential);
+  const double total = kinetic + potential, scale = largest_kinetic_ + (high_potential_ - low_potential_);
+  if (scale > 0 && total > lowest_) largest_ = std::max(largest_, (total - lowest_) / scale);
+  lowest_ = std::min(lowest_, total);
 }
 
 SceneRun runScene(const std::string& name, double seconds,

@@ -2,6 +2,7 @@
 // benchmark (docs/bench/scenes.md) measures: penetration from the poses, not from the solver.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -31,5 +32,19 @@ SceneRun runScene(const std::string& name, double seconds,
 
 // Deepest overlap in the world now (m, 0 when nothing overlaps), measured geometrically.
 double worldPenetration(const World& world);
+
+// Energy from nowhere, as the run-time fault check sees it (dynamics/energy_check.h): fed the world
+// after every step, the largest rise of the moving bodies' total energy (kinetic + gravitational)
+// above the lowest it had reached, as a share of the energy in play (the largest kinetic energy
+// plus the range of the potential energy seen so far).
+class EnergyRise {
+ public:
+  void add(const World& world);
+  double largest() const { return largest_; }
+
+ private:
+  double lowest_ = INFINITY, largest_kinetic_ = 0, low_potential_ = INFINITY, high_potential_ = -INFINITY;
+  double largest_ = 0;
+};
 
 }  // namespace tumble::test

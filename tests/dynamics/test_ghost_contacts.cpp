@@ -38,23 +38,13 @@ constexpr double kOverlapBound = 1e-3;   // m, the acceptance bound for overlaps
 // end state is reported.
 Watched watch(const std::string& name, ContactModel model, double seconds, const std::string& body) {
   Watched w;
-  double lowest = INFINITY, largest_kinetic = 0, low_pe = INFINITY, high_pe = -INFINITY;
+  test::EnergyRise energy;
   auto on_step = [&](const World& world) {
     const double depth = worldPenetration(world);
     w.deepest = std::max(w.deepest, depth);
     if (depth > kOverlapBound) ++w.steps_over;
-    double kinetic = 0, potential = 0;
-    for (const RigidBody& b : world.bodies) {
-      if (b.is_static) continue;
-      kinetic += b.kineticEnergy();
-      potential -= b.mass * world.gravity.dot(b.x);
-    }
-    largest_kinetic = std::max(largest_kinetic, kinetic);
-    low_pe = std::min(low_pe, potential);
-    high_pe = std::max(high_pe, potential);
-    const double total = kinetic + potential, scale = largest_kinetic + (high_pe - low_pe);
-    if (scale > 0 && total > lowest) w.largest_rise = std::max(w.largest_rise, (total - lowest) / scale);
-    lowest = std::min(lowest, total);
+    energy.add(world);
+    w.largest_rise = energy.largest();
     for (const RigidBody& b : world.bodies) {
       if (b.name != body) continue;
       w.end_com = b.x;

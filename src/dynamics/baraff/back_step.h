@@ -39,6 +39,7 @@ class BackStepper {
   double watchedDepth(const World& world, const Watch& w, const StepSettings& settings, ContactDetector& detector);
 
   std::vector<Watch> watched_;
+  std::vector<double> depths_;   // per watched pair, at one time
   std::vector<Contact> landing_points_;
 };
 
