@@ -81,6 +81,8 @@ double cachedSeparation(const PairView& p, const SatCache& c) {
 // Faces whose outward normals (B's negated) agree to within about 0.8 degrees rest face on face:
 // their contact normal stays the reference face's.
 constexpr double kOppositeFaces = 0.9999;
+// A face counts as the larger of two when its area is larger by more than this share.
+constexpr double kLargerFace = 1e-6;
 
 struct SatResult {
   AxisQuery face_a, face_b, edges;
@@ -113,6 +115,31 @@ struct Choice {
   int index_a, index_b;
 };
 
+double faceArea(const HullView& h, int face) {
+  const std::vector<int>& f = h.hull->piece->faces[static_cast<std::size_t>(face)];
+  Eigen::Vector3d twice = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < f.size(); ++k)
+    twice += h.vertices[f[k]].cross(h.vertices[f[(k + 1) % f.size()]]);
+  return 0.5 * twice.norm();
+}
+
+// Two opposite faces in contact that separate the pair equally well (a face resting on a face,
+// tilted by rounding): the contact is the smaller face's edges on the larger face's inside (when
+// its footprint lies within the larger face, as a 1 m cube's top under a 10 m cube), so the normal
+// is the larger face's. The smaller face's normal, tilted by the 1e-6 rad a light cube squeezed
+// between the ground and a 1000 times heavier cube takes, turned the heavy cube's weight into a
+// 10 N push that moved the light cube out sideways by 1.8 cm in 10 s (no friction held it).
+// Equal faces keep the choice made (A's, or the cached one).
+Choice preferLargerFace(const SatResult& r, const PairView& p, const Choice& c, double tol) {
+  if (c.axis != Axis::FaceA && c.axis != Axis::FaceB) return c;
+  if (r.face_a.index_a < 0 || r.face_b.index_b < 0) return c;
+  if (std::abs(r.face_a.separation - r.face_b.separation) > tol) return c;
+  const double area_a = faceArea(p.a, r.face_a.index_a), area_b = faceArea(p.b, r.face_b.index_b);
+  if (area_b > area_a * (1 + kLargerFace)) return {Axis::FaceB, -1, r.face_b.index_b};
+  if (area_a > area_b * (1 + kLargerFace)) return {Axis::FaceA, r.face_a.index_a, -1};
+  return c;
+}
+
 // The feature that makes the manifold (tolerances and their reasons in narrow_internal.h).
 // A cached face within the face tolerance of the winner keeps its role: near ties between two
 // faces (a box rocking on its face) then do not swap the reference face every step.
@@ -132,7 +159,7 @@ Choice chooseFeature(const SatResult& r, const PairView& p, double cached_sep, S
   const bool cached_face = cache.axis == Axis::FaceA || cache.axis == Axis::FaceB;
   const double keep_tol = narrow::kFaceRelTolerance * std::abs(chosen) + abs_tol;
   if (cached_face && cached_sep >= chosen - keep_tol) c = {cache.axis, cache.index_a, cache.index_b};
-  return c;
+  return preferLargerFace(r, p, c, keep_tol);
 }
 
 // The SAT's own answer: the axis of least penetration (largest separation), first of ties in the

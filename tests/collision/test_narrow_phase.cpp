@@ -253,3 +253,23 @@ TEST_CASE("parallel edges meeting (a tent's ridge): the normal bisects the two f
     CHECK(r->normal.isApprox(Vector3d(-1, 0, 0), 1e-12));
   }
 }
+
+// A 1 m cube tilted by 1e-6 rad under a level 10 m cube resting on it: the small top face's edges
+// touch the large bottom face's inside, so the contact's normal is the large face's, exactly
+// vertical (the small face's, tilted 1e-6 rad, turned a heavy cube's weight into a sideways push).
+TEST_CASE("face on face, one face larger: the normal is the larger face's", "[narrow]") {
+  const ConvexPiece small = makeBox(Vector3d(0.5, 0.5, 0.5)), big = makeBox(Vector3d(5, 5, 5));
+  const auto tilted = pose({0, 0, 0.5}, rotation(1e-6, Vector3d::UnitY()));
+  const auto level = pose({0, 0, 1 + 5 - 1e-7});
+  SatCache cache;
+  const auto m = collide(small, tilted, big, level, 1e-4, cache);   // the small cube is A
+  REQUIRE(m);
+  checkSane(*m);
+  CHECK(m->normal.isApprox(Vector3d(0, 0, 1), 1e-15));
+  SECTION("the pair the other way round: the same face, the normal flips") {
+    SatCache other;
+    const auto r = collide(big, level, small, tilted, 1e-4, other);
+    REQUIRE(r);
+    CHECK(r->normal.isApprox(Vector3d(0, 0, -1), 1e-15));
+  }
+}
