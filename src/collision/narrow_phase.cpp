@@ -123,13 +123,14 @@ double faceArea(const HullView& h, int face) {
   return 0.5 * twice.norm();
 }
 
-// Two opposite faces in contact that separate the pair equally well (a face resting on a face,
-// tilted by rounding): the contact is the smaller face's edges on the larger face's inside (when
+// Two faces that separate the pair equally well (within `tol`, the feature choice's own). For
+// opposite faces in contact (a face resting on a face, tilted by rounding) the contact is the smaller face's edges on the larger face's inside (when
 // its footprint lies within the larger face, as a 1 m cube's top under a 10 m cube), so the normal
 // is the larger face's. The smaller face's normal, tilted by the 1e-6 rad a light cube squeezed
 // between the ground and a 1000 times heavier cube takes, turned the heavy cube's weight into a
 // 10 N push that moved the light cube out sideways by 1.8 cm in 10 s (no friction held it).
-// Equal faces keep the choice made (A's, or the cached one).
+// Equal faces keep the choice made (A's, or the cached one). Faces meeting at an angle (a tent's
+// ridge) take the bisector afterwards (shareEdgeNormal), whichever face was chosen.
 Choice preferLargerFace(const SatResult& r, const PairView& p, const Choice& c, double tol) {
   if (c.axis != Axis::FaceA && c.axis != Axis::FaceB) return c;
   if (r.face_a.index_a < 0 || r.face_b.index_b < 0) return c;

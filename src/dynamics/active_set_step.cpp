@@ -45,14 +45,17 @@ Eigen::VectorXd activeSetStep(const World& world, const std::vector<ContactRow>&
     if (!world.bodies[r.a].is_static) on_body[r.a].push_back({i, -r.dir, -r.ra.cross(r.dir)});
     if (!world.bodies[r.b].is_static) on_body[r.b].push_back({i, r.dir, r.rb.cross(r.dir)});
   }
+  // The island's bodies, in index order: the loops below visit only these, not the whole world.
+  std::vector<std::size_t> carrying;
+  for (std::size_t k = 0; k < on_body.size(); ++k)
+    if (!on_body[k].empty()) carrying.push_back(k);
   // The free rows' right-hand side: -aim, less what the rows held at their bounds already do.
   std::vector<Eigen::Matrix3d> inv_inertia(world.bodies.size(), Eigen::Matrix3d::Zero());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(free), diag = Eigen::VectorXd::Zero(free);
   for (int i = 0; i < n; ++i)
     if (index[i] >= 0) rhs[index[i]] = -aim[i];
-  for (std::size_t k = 0; k < on_body.size(); ++k) {
+  for (std::size_t k : carrying) {
     const std::vector<Side>& sides = on_body[k];
-    if (sides.empty()) continue;
     const RigidBody& body = world.bodies[k];
     inv_inertia[k] = inverseInertiaWorld(body);
     Eigen::Vector3d dv = Eigen::Vector3d::Zero(), dw = Eigen::Vector3d::Zero();
@@ -72,9 +75,8 @@ Eigen::VectorXd activeSetStep(const World& world, const std::vector<ContactRow>&
   // plank under twelve crossings of four points has 144 rows, 20 000 entries.
   auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
     y.setZero(free);
-    for (std::size_t k = 0; k < on_body.size(); ++k) {
+    for (std::size_t k : carrying) {
       const std::vector<Side>& sides = on_body[k];
-      if (sides.empty()) continue;
       Eigen::Vector3d p = Eigen::Vector3d::Zero(), l = Eigen::Vector3d::Zero();
       for (const Side& s : sides)
         if (index[s.row] >= 0) p += x[index[s.row]] * s.lin, l += x[index[s.row]] * s.ang;
@@ -130,12 +132,11 @@ Eigen::VectorXd activeSetStep(const World& world, const std::vector<ContactRow>&
   // The merit, which Gauss-Seidel lowers at every row it visits.
   auto merit = [&](const Eigen::VectorXd& g) {
     std::vector<Eigen::Vector3d> dv(world.bodies.size(), Eigen::Vector3d::Zero()), dl(world.bodies.size(), Eigen::Vector3d::Zero());
-    for (std::size_t k = 0; k < on_body.size(); ++k)
+    for (std::size_t k : carrying)
       for (const Side& s : on_body[k]) dv[k] += g[s.row] * s.lin, dl[k] += g[s.row] * s.ang;
     double e = aim.dot(g);
-    for (std::size_t k = 0; k < on_body.size(); ++k)
-      if (!on_body[k].empty())
-        e += 0.5 * (world.bodies[k].inv_mass * dv[k].squaredNorm() + dl[k].dot(inverseInertiaWorld(world.bodies[k]) * dl[k]));
+    for (std::size_t k : carrying)
+      e += 0.5 * (world.bodies[k].inv_mass * dv[k].squaredNorm() + dl[k].dot(inv_inertia[k] * dl[k]));
     return e;
   };
   const double start = merit(f);
