@@ -15,6 +15,7 @@ const char* shapeName(ShapeKind s) {
     case ShapeKind::Mesh: return "mesh";
     case ShapeKind::Box: return "box";
     case ShapeKind::Sphere: return "sphere";
+    case ShapeKind::Capsule: return "capsule";
     case ShapeKind::Plane: return "plane";
   }
   return "?";

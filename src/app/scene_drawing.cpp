@@ -1,22 +1,33 @@
 #include "app/scene_drawing.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "app/rounded_drawing.h"
 
 namespace tumble {
 namespace {
 
 // Polygon faces become triangle fans (they are convex); each triangle keeps the face normal, so
-// every convex face shades flat.
-DrawMesh meshOf(const RigidBody& body) {
+// every convex face shades flat. A body of rounded pieces (spheres, capsules) is drawn smooth
+// instead, its normals per corner; a body mixing the two draws its flat faces with a normal per
+// corner too.
+DrawMesh meshOf(const RigidBody& body, int subdivisions) {
   DrawMesh mesh;
+  const bool smooth = std::any_of(body.pieces.begin(), body.pieces.end(), [](const ConvexPiece& p) { return p.rounded(); });
   for (const ConvexPiece& piece : body.pieces) {
+    if (piece.rounded()) {
+      appendRoundedMesh(piece, subdivisions, mesh);
+      continue;
+    }
     for (std::size_t f = 0; f < piece.faces.size(); ++f) {
       const std::vector<int>& face = piece.faces[f];
       for (std::size_t k = 1; k + 1 < face.size(); ++k) {
         mesh.positions.push_back(piece.vertices[face[0]].cast<float>());
         mesh.positions.push_back(piece.vertices[face[k]].cast<float>());
         mesh.positions.push_back(piece.vertices[face[k + 1]].cast<float>());
-        mesh.normals.push_back(piece.face_normals[f].cast<float>());
+        for (int corner = 0; corner < (smooth ? 3 : 1); ++corner)
+          mesh.normals.push_back(piece.face_normals[f].cast<float>());
       }
     }
   }
@@ -63,7 +74,8 @@ SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
   }
   d.frame.ambient = srgbToLinear(scene.lighting.ambient_srgb) * float(scene.lighting.ambient_intensity);
   d.frame.background = srgbToLinear(scene.render.background_srgb);
-  for (const RigidBody& body : world.bodies) {
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& body = world.bodies[i];
     if (body.shape == ShapeKind::Plane) {
       d.frame.ground.present = true;
       d.frame.ground.height = static_cast<float>(body.x.z());
@@ -72,7 +84,8 @@ SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
       d.mesh_of_body.push_back(-1);
     } else {
       d.mesh_of_body.push_back(static_cast<int>(d.meshes.size()));
-      d.meshes.push_back(meshOf(body));
+      // the world's bodies are the scene's, in order (world_builder.h)
+      d.meshes.push_back(meshOf(body, i < scene.bodies.size() ? scene.bodies[i].subdivisions : 3));
     }
   }
   for (const RigidBody& body : world.bodies) {

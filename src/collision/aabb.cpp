@@ -33,13 +33,13 @@ Aabb aabbOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double marg
     lo = lo.cwiseMin(w);
     hi = hi.cwiseMax(w);
   }
-  return inflated({lo + pose.translation(), hi + pose.translation()}, margin_m);
+  return inflated({lo + pose.translation(), hi + pose.translation()}, margin_m + piece.radius_m);
 }
 
 double pieceRadius(const ConvexPiece& piece) {
   double r2 = 0;
   for (const Eigen::Vector3d& v : piece.vertices) r2 = std::max(r2, v.squaredNorm());
-  return std::sqrt(r2);
+  return std::sqrt(r2) + piece.radius_m;
 }
 
 double rotationAngle(const Eigen::Isometry3d& pose0, const Eigen::Isometry3d& pose1) {

@@ -21,10 +21,10 @@ bool overlaps(const Aabb& a, const Aabb& b);
 Aabb merged(const Aabb& a, const Aabb& b);
 Aabb inflated(const Aabb& box, double by_m);
 
-// Tight box of the piece's hull vertices at `pose` (body frame -> world), grown by margin_m.
+// Tight box of the piece's hull vertices (a rounded piece's core grown by its radius) at `pose` (body frame -> world), grown by margin_m.
 Aabb aabbOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double margin_m);
 
-// max |v| over the hull vertices: the radius of the ball about the body origin (the centre of mass)
+// max |v| over the hull vertices (plus a rounded piece's radius): the radius of the ball about the body origin (the centre of mass)
 // that holds the piece, whatever its orientation.
 double pieceRadius(const ConvexPiece& piece);
 

@@ -16,11 +16,13 @@ bool collideGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, doub
   // world z of a vertex is t_z + (row z of R) . v: one dot product per vertex
   const Eigen::Vector3d up_in_body = pose.linear().row(2).transpose();
   const double tz = pose.translation().z();
+  // A rounded piece's lowest points are its core's vertices lowered by its radius.
+  const double r = piece.radius_m;
   for (size_t i = 0; i < piece.vertices.size(); ++i) {
-    const double z = tz + up_in_body.dot(piece.vertices[i]);
+    const double z = tz + up_in_body.dot(piece.vertices[i]) - r;
     if (z > height_m + margin_m) continue;
     Eigen::Vector3d p = pose * piece.vertices[i];
-    p.z() = 0.5 * (z + height_m);
+    p.z() = 0.5 * (z + height_m);   // (x, y) of the core vertex: straight above its lowest point
     out.points.push_back({p, height_m - z, std::uint32_t(i)});
   }
   narrow::reduceManifold(out.points, out.normal);
@@ -39,7 +41,7 @@ double groundSeparation(const ConvexPiece& piece, const Eigen::Isometry3d& pose,
   const Eigen::Vector3d up_in_body = pose.linear().row(2).transpose();
   double lowest = INFINITY;
   for (const Eigen::Vector3d& v : piece.vertices) lowest = std::min(lowest, up_in_body.dot(v));
-  return pose.translation().z() + lowest - height_m;
+  return pose.translation().z() + lowest - piece.radius_m - height_m;
 }
 
 }  // namespace tumble

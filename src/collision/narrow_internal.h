@@ -95,6 +95,13 @@ bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double ma
 // (The result type is the public one, in the working frame here.)
 PieceDistance distance(const HullView& a, const HullView& b);
 
+// rounded_contact.cpp: pairs where either piece is rounded (a sphere, a capsule): from the
+// distance between the cores less the radii. The contact (false when apart by more than the
+// margin), the signed separation and its axis (A to B), and the distance with closest points.
+bool roundedContact(const HullView& a, const HullView& b, double margin, ContactManifold& out);
+double roundedSeparation(const HullView& a, const HullView& b, Eigen::Vector3d& axis);
+PieceDistance roundedDistance(const HullView& a, const HullView& b);
+
 // manifold_reduce.cpp: keeps at most 4 points (deepest, farthest from it, then the two that
 // enlarge the support polygon most), in that order; deterministic.
 void reduceManifold(std::vector<ContactPoint>& points, const Eigen::Vector3d& normal);

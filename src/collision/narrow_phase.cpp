@@ -64,6 +64,8 @@ PairView makePairView(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
   return {transformedView(a, rel, s), nativeView(b), &pose_b};
 }
 
+bool isRounded(const PairView& p) { return p.a.hull->piece->rounded() || p.b.hull->piece->rounded(); }
+
 double cachedSeparation(const PairView& p, const SatCache& c) {
   Eigen::Vector3d axis;
   double s = -INFINITY;
@@ -294,6 +296,12 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
   out.points.clear();
   out.closest_points = false;
   const PairView p = makePairView(a, pose_a, b, pose_b);
+  if (isRounded(p)) {   // a sphere or a capsule: no faces to test (rounded_contact.cpp)
+    cache.last_use = SatCache::Use::Miss;
+    if (!narrow::roundedContact(p.a, p.b, margin_m, out)) return false;
+    toWorld(*p.to_world, out);
+    return true;
+  }
   // the seed's "defining face/edge": while it still separates, nothing else need be tested
   const double cached_sep = cachedSeparation(p, cache);
   if (cached_sep > margin_m) {
@@ -371,7 +379,7 @@ double fullSeparation(const PairView& p, SatCache& cache) {
 PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                             const Eigen::Isometry3d& pose_b) {
   const PairView p = makePairView(a, pose_a, b, pose_b);
-  PieceDistance d = narrow::distance(p.a, p.b);
+  PieceDistance d = isRounded(p) ? narrow::roundedDistance(p.a, p.b) : narrow::distance(p.a, p.b);
   d.point_a = *p.to_world * d.point_a;
   d.point_b = *p.to_world * d.point_b;
   return d;
@@ -379,12 +387,18 @@ PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pos
 
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache) {
-  return fullSeparation(makePairView(a, pose_a, b, pose_b), cache);
+  Eigen::Vector3d unused;
+  return separation(a, pose_a, b, pose_b, cache, unused);
 }
 
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis) {
   const PairView p = makePairView(a, pose_a, b, pose_b);   // one working frame for value and axis
+  if (isRounded(p)) {   // exact: the cores' distance less the radii
+    const double s = narrow::roundedSeparation(p.a, p.b, axis);
+    axis = p.to_world->linear() * axis;
+    return s;
+  }
   const double s = fullSeparation(p, cache);
   double unused = 0;
   switch (cache.axis) {

@@ -19,6 +19,9 @@ struct Contact {
   // Separated pieces closest at a vertex or an edge's end (collision/contact_manifold.h): the
   // normal turns as they move, so the gap along it says little about whether they will meet.
   bool closest_points = false;
+  // Rounding radii of the two pieces (a sphere's, a capsule's; 0 for a polyhedron): a rounded
+  // surface rolls over the contact, whose motion follows the piece's core point behind it.
+  double radius_a = 0, radius_b = 0;
 };
 
 // Material of a contact pair. Friction: geometric mean (two equal values give that value; an ice

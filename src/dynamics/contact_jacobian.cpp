@@ -11,6 +11,10 @@ ContactRow rowAlong(const World& world, const Contact& c, const Eigen::Vector3d&
   row.dir = dir;
   row.ra = c.point - world.bodies[c.a].x;
   row.rb = c.point - world.bodies[c.b].x;
+  row.ca = row.ra - c.radius_a * c.normal;   // A's core lies behind its surface, against the normal
+  row.cb = row.rb + c.radius_b * c.normal;
+  row.rounded_a = c.radius_a > 0;
+  row.rounded_b = c.radius_b > 0;
   return row;
 }
 

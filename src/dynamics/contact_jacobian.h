@@ -17,6 +17,12 @@ struct ContactRow {
   int a = -1, b = -1;
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();
   Eigen::Vector3d ra = Eigen::Vector3d::Zero(), rb = Eigen::Vector3d::Zero();   // p - x_a, p - x_b
+  // The material points whose motion the contact follows, as offsets from x_a and x_b: p itself
+  // on a polyhedron; on a rounded piece (a sphere, a capsule) its core point behind p, since the
+  // surface rolls over the contact (a rolling ball's lowest material point accelerates upwards,
+  // its contact does not). Only accelerations differ (baraff/resting_forces.cpp).
+  Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
+  bool rounded_a = false, rounded_b = false;
 };
 
 ContactRow rowAlong(const World& world, const Contact& c, const Eigen::Vector3d& dir);

@@ -11,6 +11,7 @@ void ConvexPiece::transform(const Eigen::Matrix3d& R, const Eigen::Vector3d& t) 
 }
 
 double ConvexPiece::thickness() const {
+  if (rounded()) return 2 * radius_m;   // a capsule is thinnest across its axis
   double thinnest = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& n : face_normals) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -60,10 +60,14 @@ Matrix3d shifted(const Matrix3d& inertia, double mass, const Vector3d& d) {
 
 }  // namespace
 
-double volume(const ConvexPiece& piece) { return integrate(piece, meanVertex(piece)).volume; }
+double volume(const ConvexPiece& piece) {
+  if (piece.rounded()) return roundedVolume(piece);
+  return integrate(piece, meanVertex(piece)).volume;
+}
 
 MassProperties massProperties(const ConvexPiece& piece, double density) {
   assert(density > 0);
+  if (piece.rounded()) return roundedMassProperties(piece, density);
   const Vector3d r = meanVertex(piece);
   const VolumeIntegrals in = integrate(piece, r);
   MassProperties mp;

@@ -1,4 +1,5 @@
-// Exact mass properties of convex polyhedra (volume integrals over the faces), and of unions.
+// Exact mass properties of convex polyhedra (volume integrals over the faces) and of rounded
+// pieces (closed forms), and of unions.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,6 +14,10 @@ struct MassProperties {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();    // m, centre of mass in the input frame
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();   // kg m^2, about `center`, input frame axes
 };
+
+// Closed forms for rounded pieces (a sphere, a capsule), rounded_mass.cpp.
+double roundedVolume(const ConvexPiece& piece);
+MassProperties roundedMassProperties(const ConvexPiece& piece, double density);
 
 // Volume in m^3 of a closed convex piece.
 double volume(const ConvexPiece& piece);

@@ -101,4 +101,24 @@ ConvexPiece makeIcosphere(double radius_m, int subdivisions) {
   return sphere;
 }
 
+ConvexPiece makeSphere(double radius_m) {
+  assert(radius_m > 0);
+  ConvexPiece sphere;
+  sphere.name = "sphere";
+  sphere.vertices = {Vector3d::Zero()};
+  sphere.radius_m = radius_m;
+  return sphere;
+}
+
+ConvexPiece makeCapsule(double radius_m, double length_m) {
+  assert(radius_m > 0 && length_m >= 0);
+  if (length_m == 0) return makeSphere(radius_m);
+  ConvexPiece capsule;
+  capsule.name = "capsule";
+  capsule.vertices = {Vector3d(0, 0, -length_m / 2), Vector3d(0, 0, length_m / 2)};
+  capsule.edges = {{0, 1}};
+  capsule.radius_m = radius_m;
+  return capsule;
+}
+
 }  // namespace tumble

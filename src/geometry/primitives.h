@@ -11,5 +11,9 @@ ConvexPiece makeBox(const Eigen::Vector3d& half_extents_m);
 // An icosphere (subdivided icosahedron): level 3 gives 642 vertices. Its volume is slightly below
 // the sphere's; the exact sphere is a separate shape in the contact pipeline.
 ConvexPiece makeIcosphere(double radius_m, int subdivisions);
+// Rounded pieces (convex_piece.h): an exact sphere (a point swept by a ball of radius_m), and a
+// capsule (a segment of length_m along z, centred, swept by a ball of radius_m; length 0 is a sphere).
+ConvexPiece makeSphere(double radius_m);
+ConvexPiece makeCapsule(double radius_m, double length_m);
 
 }  // namespace tumble

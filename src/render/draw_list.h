@@ -8,10 +8,12 @@
 
 namespace tumble {
 
-// A triangle soup with one normal per triangle (flat shading per convex face).
+// A triangle soup: one normal per triangle (flat shading per convex face), or one per corner (a
+// smooth surface: a sphere, a capsule).
 struct DrawMesh {
   std::vector<Eigen::Vector3f> positions;   // 3 per triangle, counter-clockwise seen from outside
-  std::vector<Eigen::Vector3f> normals;     // 1 per triangle, outward unit
+  std::vector<Eigen::Vector3f> normals;     // outward unit: 1 per triangle, or 1 per position
+  bool smooth() const { return !positions.empty() && normals.size() == positions.size(); }
 };
 
 struct DrawInstance {

@@ -19,16 +19,17 @@ std::vector<float> flatVertices(const DrawMesh& mesh) {
   v.reserve(mesh.positions.size() * kVertexFloats);
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     const Eigen::Vector3f& p = mesh.positions[i];
-    const Eigen::Vector3f& n = mesh.normals[i / 3];
+    const Eigen::Vector3f& n = mesh.smooth() ? mesh.normals[i] : mesh.normals[i / 3];
     v.insert(v.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()});
   }
   return v;
 }
 
 void validate(const DrawMesh& mesh) {
-  if (mesh.positions.size() % 3 != 0 || mesh.normals.size() != mesh.positions.size() / 3) {
+  if (mesh.positions.size() % 3 != 0 ||
+      (mesh.normals.size() != mesh.positions.size() / 3 && mesh.normals.size() != mesh.positions.size())) {
     throw Error(ExitCode::BadInput,
-                "render mesh needs 3 positions and 1 normal per triangle, got " +
+                "render mesh needs 3 positions and 1 normal per triangle or per position, got " +
                     std::to_string(mesh.positions.size()) + " positions and " +
                     std::to_string(mesh.normals.size()) + " normals");
   }

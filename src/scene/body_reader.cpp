@@ -26,11 +26,11 @@ Eigen::Quaterniond eulerExtrinsic(const Eigen::Vector3d& deg, const std::string&
 
 void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& scene_dir) {
   auto mesh = in.optionalString("mesh");
-  auto shape = in.has("shape") ? std::optional(readChoice(in, "shape", "", {"box", "sphere", "plane"}))
+  auto shape = in.has("shape") ? std::optional(readChoice(in, "shape", "", {"box", "sphere", "capsule", "plane"}))
                                : std::nullopt;
   if (mesh && shape) in.fail("shape", "give either \"mesh\" or \"shape\", not both");
   if (!mesh && !shape)
-    in.fail("", "a body needs \"mesh\" (a file path) or \"shape\" (\"box\", \"sphere\" or \"plane\")");
+    in.fail("", "a body needs \"mesh\" (a file path) or \"shape\" (\"box\", \"sphere\", \"capsule\" or \"plane\")");
   if (mesh) {
     checkPathText(in, "mesh", *mesh);
     body.shape = ShapeKind::Mesh;
@@ -50,8 +50,13 @@ void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& sc
     body.box_size_m = in.vector3("size_m", body.box_size_m, kSize);
   } else if (*shape == "sphere") {
     body.shape = ShapeKind::Sphere;
-    body.sphere_radius_m = in.number("radius_m", body.sphere_radius_m, kSize);
-    body.sphere_subdivisions = in.integer("subdivisions", body.sphere_subdivisions, 1, 6);
+    body.radius_m = in.number("radius_m", body.radius_m, kSize);
+    body.subdivisions = in.integer("subdivisions", body.subdivisions, 1, 6);
+  } else if (*shape == "capsule") {
+    body.shape = ShapeKind::Capsule;
+    body.radius_m = in.number("radius_m", body.radius_m, kSize);
+    body.capsule_length_m = in.number("length_m", body.capsule_length_m, {0, 1e6});
+    body.subdivisions = in.integer("subdivisions", body.subdivisions, 1, 6);
   } else {
     body.shape = ShapeKind::Plane;
   }

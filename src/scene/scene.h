@@ -27,8 +27,10 @@ struct BodySpec {
   SourceLocation mesh_location;                        // where "mesh" was written
   double mesh_scale = 1;                               // file units -> metres
   Eigen::Vector3d box_size_m{1, 1, 1};                 // full edge lengths, for Box
-  double sphere_radius_m = 0.5;                        // for Sphere
-  int sphere_subdivisions = 3;                         // icosphere level (3: 642 vertices)
+  double radius_m = 0.5;                               // for Sphere and Capsule
+  double capsule_length_m = 1;                         // the straight part, along the body's z
+  int subdivisions = 3;                                // how finely a sphere or capsule is drawn
+                                                       // (the collision shape is exact)
   bool is_static = false;                              // planes are always static
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero(); // of the shape's origin (mesh file origin)
   SourceLocation position_location;                    // where "position_m" was (or would be) written

@@ -26,7 +26,8 @@ std::vector<ConvexPiece> piecesOf(const Scene& scene, const BodySpec& spec,
                                   std::vector<std::string>& warnings) {
   switch (spec.shape) {
     case ShapeKind::Box: return {makeBox(spec.box_size_m / 2)};
-    case ShapeKind::Sphere: return {makeIcosphere(spec.sphere_radius_m, spec.sphere_subdivisions)};
+    case ShapeKind::Sphere: return {makeSphere(spec.radius_m)};
+    case ShapeKind::Capsule: return {makeCapsule(spec.radius_m, spec.capsule_length_m)};
     case ShapeKind::Plane: return {};
     case ShapeKind::Mesh: break;
   }

@@ -27,11 +27,12 @@ struct Shot {
   double wall_near = 0, wall_far = 0;
 };
 
-// Largest extent of the body's vertices along `dir` from its centre, in its current pose.
+// Largest extent of the body along `dir` from its centre, in its current pose: of its vertices,
+// plus the rounding of a rounded piece (an exact sphere's radius).
 double support(const RigidBody& b, const Eigen::Vector3d& dir) {
   double s = -INFINITY;
   for (const Eigen::Vector3d& v : b.pieces[0].vertices) s = std::max(s, dir.dot(b.rotation() * v));
-  return s;
+  return s + b.pieces[0].radius_m;
 }
 
 Shot makeShot(Rng& rng, bool straight) {
@@ -47,8 +48,7 @@ Shot makeShot(Rng& rng, bool straight) {
     shot.box_size_m = Eigen::Vector3d(uniform(rng, 0.01, 0.1), uniform(rng, 0.01, 0.1), uniform(rng, 0.01, 0.1));
   } else {
     shot.shape = ShapeKind::Sphere;
-    shot.sphere_radius_m = uniform(rng, 0.005, 0.05);
-    shot.sphere_subdivisions = 2;
+    shot.radius_m = uniform(rng, 0.005, 0.05);
   }
   BuiltWorld built = buildWorld(scene);
   Shot out{std::move(built.world), built.step, -1, near, near + thickness};
@@ -72,7 +72,7 @@ Shot makeShot(Rng& rng, bool straight) {
   } else {
     // spinning: its bounding sphere is still clear of the wall `lead` before it could reach it
     double radius = 0;
-    for (const Eigen::Vector3d& v : b.pieces[0].vertices) radius = std::max(radius, v.norm());
+    for (const Eigen::Vector3d& v : b.pieces[0].vertices) radius = std::max(radius, v.norm() + b.pieces[0].radius_m);
     // aimed at the wall's middle: at `lead` its bounding sphere's front is at the wall's plane
     b.x = Eigen::Vector3d(near - radius, 0, 0) - speed * dir * lead;
   }

@@ -1,5 +1,5 @@
-// Hard case 1 (docs/hard-cases.md): the bouncing ball comes to rest in finite time (Zeno). An
-// icosphere of 642 vertices lands face down (three points of one face, solved as one impact).
+// Hard case 1 (docs/hard-cases.md): the bouncing ball comes to rest in finite time (Zeno). An exact
+// sphere lands on one point.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -28,10 +28,11 @@ ZenoOutcome runZeno(const std::string& scene_name, double seconds) {
   hard::HardRun run = hard::simulate(scene, seconds, [&](const World& w) {
     const RigidBody& ball = w.bodies[1];
     if (face == 0) {
-      // the face's distance from the centre: the lowest vertex (first step, ball still falling)
-      double lowest = 0;
+      // the lowest point's distance below the centre (first step, ball still falling): the lowest
+      // vertex, lowered by the piece's rounding (all of it for an exact sphere)
+      double lowest = INFINITY;
       for (const Eigen::Vector3d& v : ball.pieces[0].vertices) lowest = std::min(lowest, (ball.rotation() * v).z());
-      face = -lowest;
+      face = ball.pieces[0].radius_m - lowest;
     }
     double z = ball.x.z() - face, vz = ball.velocity().z();
     // A bounce starts when v_z turns upward; the apex of its arc is z + v_z^2 / 2g, exact for

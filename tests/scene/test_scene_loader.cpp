@@ -54,7 +54,7 @@ TEST_CASE("comments are allowed", "[scene]") {
     "schema_version": 1, /* a block comment */
     "bodies": [ { "shape": "sphere", "radius_m": 0.25 } ]
   })", "scenes/test.json");
-  CHECK(s.bodies[0].sphere_radius_m == 0.25);
+  CHECK(s.bodies[0].radius_m == 0.25);
   CHECK(s.bodies[0].name == "body_0");
 }
 

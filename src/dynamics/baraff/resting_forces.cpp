@@ -13,20 +13,24 @@ namespace tumble {
 namespace {
 
 // Acceleration of the material point at p of a body under its wrench: a + alpha x r + w x (w x r),
-// with alpha = I^-1 (tau - w x I w) (Euler's equation in world axes).
-Eigen::Vector3d pointAcceleration(const RigidBody& body, const Wrench& wrench, const Eigen::Vector3d& p) {
+// with alpha = I^-1 (tau - w x I w) (Euler's equation in world axes). On a rounded piece the
+// contact moves over the surface as it rolls, and follows the core point c behind it: the
+// centripetal part is the core point's, w x (w x (c - x)); alpha x r keeps p's lever, so a ball
+// rolling without slipping keeps its contact at rest (a + alpha x r = 0 along the ground).
+Eigen::Vector3d pointAcceleration(const RigidBody& body, const Wrench& wrench, const Eigen::Vector3d& p,
+                                  const Eigen::Vector3d& core) {
   if (body.is_static) return Eigen::Vector3d::Zero();
   Eigen::Vector3d r = p - body.x;
   Eigen::Vector3d w = body.angularVelocity();
   Eigen::Vector3d alpha = inverseInertiaWorld(body) * (wrench.torque - w.cross(body.L));
-  return wrench.force * body.inv_mass + alpha.cross(r) + w.cross(w.cross(r));
+  return wrench.force * body.inv_mass + alpha.cross(r) + w.cross(w.cross(core - body.x));
 }
 
 double rowAcceleration(const World& world, const ContactRow& row, const std::vector<Wrench>& wrenches) {
   const RigidBody& A = world.bodies[row.a];
   const RigidBody& B = world.bodies[row.b];
-  Eigen::Vector3d rel = pointAcceleration(B, wrenches[row.b], B.x + row.rb) -
-                        pointAcceleration(A, wrenches[row.a], A.x + row.ra);
+  Eigen::Vector3d rel = pointAcceleration(B, wrenches[row.b], B.x + row.rb, B.x + row.cb) -
+                        pointAcceleration(A, wrenches[row.a], A.x + row.ra, A.x + row.ca);
   return row.dir.dot(rel);
 }
 
@@ -52,7 +56,10 @@ Eigen::Vector3d tangentialVelocity(const World& world, const Contact& c) {
 }
 
 // Baraff's b: the relative acceleration along each row if no contact force acted. For a normal
-// between two moving bodies the normal turns with A's face, adding 2 (w_A x n) . v_rel (Baraff 1994).
+// between two moving bodies the normal turns with A's face, adding 2 (w_A x n) . v_rel (Baraff 1994);
+// with B's face when A is rounded (a ball on a moving box's face). Between two rounded pieces the
+// normal joins their cores and turns as they pass each other: the gap |c_B - c_A| - r_A - r_B
+// has second derivative n . a_rel + |v_rel,t|^2 / |c_B - c_A| (the cores' relative motion).
 Eigen::VectorXd freeAccelerations(const World& world, const ContactRows& rows, const std::vector<Wrench>& wrenches) {
   Eigen::VectorXd b(rows.rows.size());
   for (std::size_t r = 0; r < rows.rows.size(); ++r) b[r] = rowAcceleration(world, rows.rows[r], wrenches);
@@ -61,25 +68,55 @@ Eigen::VectorXd freeAccelerations(const World& world, const ContactRows& rows, c
     const RigidBody& A = world.bodies[row.a];
     const RigidBody& B = world.bodies[row.b];
     if (A.is_static || B.is_static) continue;
+    if (row.rounded_a && row.rounded_b) {
+      const Eigen::Vector3d v_cores = pointVelocity(B, B.x + row.cb) - pointVelocity(A, A.x + row.ca);
+      const double apart = row.dir.dot(B.x + row.cb - A.x - row.ca);
+      const Eigen::Vector3d v_t = v_cores - v_cores.dot(row.dir) * row.dir;
+      if (apart > 0) b[r] += v_t.squaredNorm() / apart;
+      continue;
+    }
     Eigen::Vector3d v_rel = pointVelocity(B, B.x + row.rb) - pointVelocity(A, A.x + row.ra);
-    b[r] += 2 * A.angularVelocity().cross(row.dir).dot(v_rel);
+    const Eigen::Vector3d w_face = row.rounded_a ? B.angularVelocity() : A.angularVelocity();
+    b[r] += 2 * w_face.cross(row.dir).dot(v_rel);
   }
   return b;
+}
+
+// How much a unit force along d at the contact changes the relative velocity along d:
+// d . (J M^-1 J^T) d for that one row, both bodies.
+double rowMobility(const World& world, const Contact& c, const Eigen::Vector3d& d) {
+  double k = 0;
+  for (int i : {c.a, c.b}) {
+    const RigidBody& body = world.bodies[i];
+    if (body.is_static) continue;
+    const Eigen::Vector3d rxd = (c.point - body.x).cross(d);
+    k += body.inv_mass + rxd.dot(inverseInertiaWorld(body) * rxd);
+  }
+  return k;
 }
 
 // A slide slower than friction can stop within one step is held by static friction instead:
 // dynamic friction held over the whole step would overshoot and reverse it (a sliding block then
 // chatters at about mu g dt / 2 instead of stopping). The deceleration friction can give is
-// estimated from the contact's own normal load, mu times the free normal acceleration.
+// estimated from the contact's own normal load, mu times the free normal acceleration. At a
+// rounded piece's one point friction also turns the body, so it slows the contact by the ratio of
+// the tangential to the normal mobility more (7/2 for a ball on the ground, where a slide of
+// mu g dt had gone on dynamic and reversed every step, the ball never rolling); a polyhedron's
+// contacts share their load over a manifold, where one point's ratio says little, and keep 1.
 bool slides(const RestingContext& ctx, const Contact& c, const Eigen::Vector3d& vt) {
   double speed = vt.norm();
   if (speed <= ctx.settings.sliding_speed_m_s) return false;
   if (ctx.step_s <= 0) return true;
   const RigidBody& A = ctx.world.bodies[c.a];
   const RigidBody& B = ctx.world.bodies[c.b];
-  double load = -c.normal.dot(pointAcceleration(B, ctx.wrenches[c.b], c.point) -
-                              pointAcceleration(A, ctx.wrenches[c.a], c.point));
-  return speed > c.friction * std::max(0.0, load) * ctx.step_s;
+  double load = -c.normal.dot(pointAcceleration(B, ctx.wrenches[c.b], c.point, c.point + c.radius_b * c.normal) -
+                              pointAcceleration(A, ctx.wrenches[c.a], c.point, c.point - c.radius_a * c.normal));
+  double gain = 1;
+  if (c.radius_a > 0 || c.radius_b > 0) {
+    const double normal = rowMobility(ctx.world, c, c.normal);
+    if (normal > 0) gain = std::max(1.0, rowMobility(ctx.world, c, vt / speed) / normal);
+  }
+  return speed > gain * c.friction * std::max(0.0, load) * ctx.step_s;
 }
 
 // Static friction rows ask for the tangential velocity left at the contact to vanish within the
