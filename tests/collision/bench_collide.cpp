@@ -1,4 +1,6 @@
-// Micro benchmark (not a test): time per box-box collide call in the situations a pile produces.
+// Micro benchmark (not a test): time per box-box collide call in the situations a pile produces,
+// and per ball-box call: an exact sphere against a polyhedral one of 642 vertices (the icosphere a
+// sphere was before spheres were exact), and a capsule.
 // Prints CSV: case,calls,ns_per_call,contacts
 #include <ctime>
 #include <cstdio>
@@ -21,7 +23,7 @@ Eigen::Isometry3d pose(const Vector3d& t, const Eigen::Quaterniond& q) {
 }
 
 template <class MakePose>
-void run(const char* name, const CollisionHull& h, MakePose make_pose, bool keep_cache) {
+void run(const char* name, const CollisionHull& ha, const CollisionHull& hb, MakePose make_pose, bool keep_cache) {
   constexpr int kPoses = 1024, kRepeats = 200;
   std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < kPoses; ++i) poses.push_back(make_pose(i));
@@ -33,7 +35,7 @@ void run(const char* name, const CollisionHull& h, MakePose make_pose, bool keep
   for (int r = 0; r < kRepeats; ++r) {
     for (int i = 0; i < kPoses; ++i) {
       if (!keep_cache) caches[i] = SatCache{};
-      contacts += collide(h, Eigen::Isometry3d::Identity(), h, poses[i], 0.01, caches[i], m);
+      contacts += collide(ha, Eigen::Isometry3d::Identity(), hb, poses[i], 0.01, caches[i], m);
     }
   }
   const double ns = 1e9 * double(std::clock() - t0) / CLOCKS_PER_SEC;
@@ -79,17 +81,30 @@ int main() {
     return pose(Vector3d(0.3 * u(rng), 0.3 * u(rng), 0.995),
                 Eigen::Quaterniond(Eigen::AngleAxisd(u(rng), Vector3d::UnitZ())));
   };
-  run("resting_face_face", h, resting, true);
-  run("resting_face_face_cold_cache", h, resting, false);
+  run("resting_face_face", h, h, resting, true);
+  run("resting_face_face_cold_cache", h, h, resting, false);
   const auto random_touching = [&](int) {
     return pose(0.9 * Vector3d(u(rng), u(rng), u(rng)), Eigen::Quaterniond::UnitRandom());
   };
-  run("random_near", h, random_touching, true);
+  run("random_near", h, h, random_touching, true);
   const auto separated = [&](int) {
     return pose(Vector3d(1.2 + 0.2 * std::abs(u(rng)), 0.3 * u(rng), 0.3 * u(rng)),
                 Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * u(rng), Vector3d::UnitZ())));
   };
-  run("separated_cached", h, separated, true);
-  run("separated_cold_cache", h, separated, false);
+  run("separated_cached", h, h, separated, true);
+  run("separated_cold_cache", h, h, separated, false);
+  // A ball of radius 0.1 m resting on a box's top face anywhere on it, and a capsule lying there.
+  const ConvexPiece ball = makeSphere(0.1), facets = makeIcosphere(0.1, 3), pill = makeCapsule(0.1, 0.3);
+  const CollisionHull h_ball = makeCollisionHull(ball), h_facets = makeCollisionHull(facets), h_pill = makeCollisionHull(pill);
+  const auto on_top = [&](int) {
+    return pose(Vector3d(0.4 * u(rng), 0.4 * u(rng), 0.6 - 1e-6), Eigen::Quaterniond::UnitRandom());
+  };
+  run("ball_on_box_exact_sphere", h, h_ball, on_top, true);
+  run("ball_on_box_icosphere_642", h, h_facets, on_top, true);
+  const auto lying = [&](int) {
+    return pose(Vector3d(0.2 * u(rng), 0.2 * u(rng), 0.6 - 1e-6),
+                Eigen::Quaterniond(Eigen::AngleAxisd(u(rng), Vector3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX())));
+  };
+  run("capsule_lying_on_box", h, h_pill, lying, true);
   runBroadPhase();
 }

@@ -62,7 +62,11 @@ void checkZeno(const ZenoOutcome& out, double e, double seconds) {
   for (int k = 1; k <= 5; ++k) {
     double expected = std::pow(e, 2 * k) * kDrop;
     INFO("apex " << k << ": " << out.apexes[k - 1] << " m, expected " << expected);
-    CHECK(std::abs(out.apexes[k - 1] - expected) < 0.005 * expected);
+    // Within 1e-6 of the drop height: an exact sphere lands where the contact tolerance (1e-6 m)
+    // takes the landing, so each apex may be off by that much, and no more (measured 2026-11-24:
+    // at most 8.4e-7 m with e = 0.5, 8.2e-7 m with e = 0.9). An icosphere's facets had it off by
+    // up to 0.5 %.
+    CHECK(std::abs(out.apexes[k - 1] - expected) < 1e-6 * kDrop);
   }
   for (std::size_t k = 1; k < out.apexes.size(); ++k) CHECK(out.apexes[k] <= out.apexes[k - 1]);
   // At rest by T + 0.1 s and to the end of the run, which is 10 s later.

@@ -58,6 +58,15 @@ TEST_CASE("comments are allowed", "[scene]") {
   CHECK(s.bodies[0].name == "body_0");
 }
 
+TEST_CASE("a capsule: radius, the straight part's length, how finely it is drawn", "[scene]") {
+  const Scene c = parseScene(R"({"schema_version": 1,
+    "bodies": [ { "shape": "capsule", "radius_m": 0.1, "length_m": 0.4, "subdivisions": 4 } ]})", "scenes/test.json");
+  CHECK(c.bodies[0].shape == ShapeKind::Capsule);
+  CHECK(c.bodies[0].radius_m == 0.1);
+  CHECK(c.bodies[0].capsule_length_m == 0.4);
+  CHECK(c.bodies[0].subdivisions == 4);
+}
+
 TEST_CASE("rotation_deg uses extrinsic XYZ (Blender's XYZ Euler)", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "bodies": [
     {"shape": "box", "rotation_deg": [90, 0, 90]} ]})", "scenes/test.json");
@@ -136,6 +145,14 @@ TEST_CASE("each bad input names file, line, column and field", "[scene]") {
       {"duplicate names", "{\"schema_version\": 1, \"bodies\": [{\"name\": \"a\", \"shape\": \"box\"}, {\"name\": \"a\", \"shape\": \"box\"}]}",
        "/bodies/1/name: another body is already named \"a\"", ExitCode::BadInput},
       {"unknown shape", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"boxx\"}]}", "did you mean \"box\"?", ExitCode::BadInput},
+      {"zero radius", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"sphere\", \"radius_m\": 0}]}",
+       "scenes/test.json:1:66: /bodies/0/radius_m: 0 is outside [1e-06, 1000000]", ExitCode::BadInput},
+      {"negative capsule radius", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"capsule\", \"radius_m\": -0.1}]}",
+       "/bodies/0/radius_m: -0.1 is outside [1e-06, 1000000]", ExitCode::BadInput},
+      {"capsule shorter than zero", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"capsule\", \"length_m\": -1}]}",
+       "/bodies/0/length_m: -1 is outside [0, 1000000]", ExitCode::BadInput},
+      {"a box's size on a capsule", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"capsule\", \"size_m\": [1, 1, 1]}]}",
+       "/bodies/0/size_m: unknown field", ExitCode::BadInput},
       {"neither mesh nor shape", "{\"schema_version\": 1, \"bodies\": [{\"name\": \"x\"}]}", "needs \"mesh\"", ExitCode::BadInput},
       {"missing mesh file", "{\"schema_version\": 1, \"bodies\": [{\"mesh\": \"no/such.obj\"}]}",
        "/bodies/0/mesh: cannot read mesh file", ExitCode::MissingInput},
