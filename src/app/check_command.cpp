@@ -16,6 +16,9 @@ const char* shapeName(ShapeKind s) {
     case ShapeKind::Box: return "box";
     case ShapeKind::Sphere: return "sphere";
     case ShapeKind::Capsule: return "capsule";
+    case ShapeKind::Cylinder: return "cylinder";
+    case ShapeKind::Cone: return "cone";
+    case ShapeKind::Compound: return "compound";
     case ShapeKind::Plane: return "plane";
   }
   return "?";

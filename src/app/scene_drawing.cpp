@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/rounded_drawing.h"
+#include "app/smooth_drawing.h"
 
 namespace tumble {
 namespace {
@@ -14,10 +14,14 @@ namespace {
 // corner too.
 DrawMesh meshOf(const RigidBody& body, int subdivisions) {
   DrawMesh mesh;
-  const bool smooth = std::any_of(body.pieces.begin(), body.pieces.end(), [](const ConvexPiece& p) { return p.rounded(); });
+  const bool smooth = std::any_of(body.pieces.begin(), body.pieces.end(), [](const ConvexPiece& p) { return p.smooth(); });
   for (const ConvexPiece& piece : body.pieces) {
     if (piece.rounded()) {
       appendRoundedMesh(piece, subdivisions, mesh);
+      continue;
+    }
+    if (piece.revolved()) {
+      appendRevolvedMesh(piece, subdivisions, mesh);
       continue;
     }
     for (std::size_t f = 0; f < piece.faces.size(); ++f) {

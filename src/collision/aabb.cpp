@@ -21,8 +21,26 @@ Aabb inflated(const Aabb& box, double by_m) {
   return {box.min - d, box.max + d};
 }
 
+namespace {
+
+// A disc of radius r about the unit axis u reaches r sqrt(1 - u_i^2) along world axis i; a cylinder
+// is its two end discs' box, a cone its base disc's and its apex's.
+Aabb revolvedAabb(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double margin_m) {
+  const Eigen::Vector3d p0 = pose * piece.vertices[0], p1 = pose * piece.vertices[1];
+  const Eigen::Vector3d u = (p1 - p0).normalized();
+  Eigen::Vector3d reach;
+  for (int i = 0; i < 3; ++i) reach[i] = piece.disc_radius_m * std::sqrt(std::max(0.0, 1 - u[i] * u[i]));
+  Aabb box{p0 - reach, p0 + reach};
+  if (piece.revolution == ConvexPiece::Revolution::Cylinder) box = merged(box, {p1 - reach, p1 + reach});
+  else box = merged(box, {p1, p1});
+  return inflated(box, margin_m);
+}
+
+}  // namespace
+
 Aabb aabbOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double margin_m) {
   assert(!piece.vertices.empty());
+  if (piece.revolved()) return revolvedAabb(piece, pose, margin_m);
   // Each world coordinate is t_i + row_i(R) . v, so per axis only the extreme of row_i(R) . v is
   // needed: rotate once per vertex, no Isometry product (which would also touch the last row).
   const Eigen::Matrix3d R = pose.linear();
@@ -39,7 +57,7 @@ Aabb aabbOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double marg
 double pieceRadius(const ConvexPiece& piece) {
   double r2 = 0;
   for (const Eigen::Vector3d& v : piece.vertices) r2 = std::max(r2, v.squaredNorm());
-  return std::sqrt(r2) + piece.radius_m;
+  return std::sqrt(r2) + piece.radius_m + piece.disc_radius_m;   // a disc's rim: at most its radius farther
 }
 
 double rotationAngle(const Eigen::Isometry3d& pose0, const Eigen::Isometry3d& pose1) {

@@ -25,8 +25,8 @@ std::vector<std::array<int, 2>> edgeFaces(const ConvexPiece& piece) {
       faces[it->second][u < v ? 0 : 1] = f;
     }
   }
-  // A rounded piece's core (a segment) has an edge but no faces: its surface is the ball's.
-  if (!piece.rounded())
+  // A rounded piece's core (a segment) and a solid of revolution's axis have an edge but no faces.
+  if (!piece.smooth())
     for ([[maybe_unused]] const auto& ef : faces) assert(ef[0] >= 0 && ef[1] >= 0);
   return faces;
 }
@@ -53,7 +53,7 @@ CollisionHull makeCollisionHull(const ConvexPiece& piece) {
   }
   hull.centroid /= double(piece.vertices.size());
   hull.radius = pieceRadius(piece);
-  hull.size = (hi - lo).maxCoeff() + 2 * piece.radius_m;
+  hull.size = (hi - lo).maxCoeff() + 2 * (piece.radius_m + piece.disc_radius_m);
   return hull;
 }
 

@@ -102,6 +102,13 @@ bool roundedContact(const HullView& a, const HullView& b, double margin, Contact
 double roundedSeparation(const HullView& a, const HullView& b, Eigen::Vector3d& axis);
 PieceDistance roundedDistance(const HullView& a, const HullView& b);
 
+// support_contact.cpp: pairs where either piece is a solid of revolution (a cylinder, a cone):
+// from the two support mappings (GJK and EPA, support_query.h), the contact points from the
+// features facing each other. The same three answers as the rounded pairs'.
+bool supportContact(const HullView& a, const HullView& b, double margin, ContactManifold& out);
+double supportSeparation(const HullView& a, const HullView& b, Eigen::Vector3d& axis);
+PieceDistance supportDistance(const HullView& a, const HullView& b);
+
 // manifold_reduce.cpp: keeps at most 4 points (deepest, farthest from it, then the two that
 // enlarge the support polygon most), in that order; deterministic.
 void reduceManifold(std::vector<ContactPoint>& points, const Eigen::Vector3d& normal);

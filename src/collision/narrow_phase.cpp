@@ -65,6 +65,7 @@ PairView makePairView(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
 }
 
 bool isRounded(const PairView& p) { return p.a.hull->piece->rounded() || p.b.hull->piece->rounded(); }
+bool isRevolved(const PairView& p) { return p.a.hull->piece->revolved() || p.b.hull->piece->revolved(); }
 
 double cachedSeparation(const PairView& p, const SatCache& c) {
   Eigen::Vector3d axis;
@@ -296,6 +297,12 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
   out.points.clear();
   out.closest_points = false;
   const PairView p = makePairView(a, pose_a, b, pose_b);
+  if (isRevolved(p)) {   // a cylinder or a cone: its support mapping (support_contact.cpp)
+    cache.last_use = SatCache::Use::Miss;
+    if (!narrow::supportContact(p.a, p.b, margin_m, out)) return false;
+    toWorld(*p.to_world, out);
+    return true;
+  }
   if (isRounded(p)) {   // a sphere or a capsule: no faces to test (rounded_contact.cpp)
     cache.last_use = SatCache::Use::Miss;
     if (!narrow::roundedContact(p.a, p.b, margin_m, out)) return false;
@@ -379,7 +386,9 @@ double fullSeparation(const PairView& p, SatCache& cache) {
 PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                             const Eigen::Isometry3d& pose_b) {
   const PairView p = makePairView(a, pose_a, b, pose_b);
-  PieceDistance d = isRounded(p) ? narrow::roundedDistance(p.a, p.b) : narrow::distance(p.a, p.b);
+  PieceDistance d = isRevolved(p) ? narrow::supportDistance(p.a, p.b)
+                    : isRounded(p) ? narrow::roundedDistance(p.a, p.b)
+                                   : narrow::distance(p.a, p.b);
   d.point_a = *p.to_world * d.point_a;
   d.point_b = *p.to_world * d.point_b;
   return d;
@@ -394,8 +403,8 @@ double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const
 double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const CollisionHull& b,
                   const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis) {
   const PairView p = makePairView(a, pose_a, b, pose_b);   // one working frame for value and axis
-  if (isRounded(p)) {   // exact: the cores' distance less the radii
-    const double s = narrow::roundedSeparation(p.a, p.b, axis);
+  if (isRevolved(p) || isRounded(p)) {   // exact: from the support mappings, or the cores' distance less the radii
+    const double s = isRevolved(p) ? narrow::supportSeparation(p.a, p.b, axis) : narrow::roundedSeparation(p.a, p.b, axis);
     axis = p.to_world->linear() * axis;
     return s;
   }

@@ -8,7 +8,7 @@ BodyExtent extentOf(const RigidBody& body) {
   BodyExtent e;
   for (const ConvexPiece& piece : body.pieces) {
     e.thinnest = std::min(e.thinnest, piece.thickness());
-    for (const Eigen::Vector3d& v : piece.vertices) e.radius = std::max(e.radius, v.norm() + piece.radius_m);
+    for (const Eigen::Vector3d& v : piece.vertices) e.radius = std::max(e.radius, v.norm() + piece.radius_m + piece.disc_radius_m);
   }
   return e;
 }

@@ -60,8 +60,8 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
     c.restitution = combineRestitution(A.restitution, B.restitution);
     c.friction = combineFriction(A.friction, B.friction);
     c.closest_points = m.closest_points;
-    c.radius_a = pieces_[pair.piece_a].shape->radius_m;
-    c.radius_b = pair.piece_b >= 0 ? pieces_[pair.piece_b].shape->radius_m : 0.0;
+    c.radius_a = pieces_[pair.piece_a].shape->rollingRadius(A.q.conjugate() * m.normal);
+    c.radius_b = pair.piece_b >= 0 ? pieces_[pair.piece_b].shape->rollingRadius(B.q.conjugate() * m.normal) : 0.0;
     out.push_back(c);
     if (pairs) pairs->push_back(pair);
   }

@@ -1,6 +1,7 @@
 #include "geometry/convex_piece.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace tumble {
@@ -12,6 +13,11 @@ void ConvexPiece::transform(const Eigen::Matrix3d& R, const Eigen::Vector3d& t) 
 
 double ConvexPiece::thickness() const {
   if (rounded()) return 2 * radius_m;   // a capsule is thinnest across its axis
+  if (revolved()) {
+    const double h = (vertices[1] - vertices[0]).norm(), r = disc_radius_m;
+    if (revolution == Revolution::Cylinder) return std::min(2 * r, h);
+    return 2 * r * h / (r + std::hypot(r, h));   // the diameter of the cone's inscribed ball
+  }
   double thinnest = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector3d& n : face_normals) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -22,6 +28,39 @@ double ConvexPiece::thickness() const {
     thinnest = std::min(thinnest, hi - lo);
   }
   return thinnest;
+}
+
+double ConvexPiece::rollingRadius(const Eigen::Vector3d& n) const {
+  if (rounded()) return radius_m;
+  if (revolution != Revolution::Cylinder) return 0;
+  // On its side when the normal is square to the axis, to the angle below which two directions
+  // count as parallel elsewhere in the narrow phase (1e-6 rad).
+  const Eigen::Vector3d axis = (vertices[1] - vertices[0]).normalized();
+  return std::abs(axis.dot(n)) < 1e-6 ? disc_radius_m : 0.0;
+}
+
+Eigen::Vector3d ConvexPiece::support(const Eigen::Vector3d& d) const {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < vertices.size(); ++i)
+    if (vertices[i].dot(d) > vertices[best].dot(d)) best = i;
+  if (rounded()) return vertices[best] + radius_m * d.normalized();
+  if (!revolved()) return vertices[best];
+  // The disc at an end of the axis reaches farthest along d at its rim point in d's direction
+  // across the axis; a cylinder takes the end farther along d, a cone the farther of its base rim
+  // point and its apex.
+  const Eigen::Vector3d axis = (vertices[1] - vertices[0]).normalized();
+  Eigen::Vector3d across = d - d.dot(axis) * axis;
+  const double n = across.norm();
+  if (n > 1e-12 * d.norm()) {   // square to the axis once more after normalising (rounding)
+    across /= n;
+    across = (across - across.dot(axis) * axis).normalized();
+  } else {
+    across.setZero();
+  }
+  if (revolution == Revolution::Cylinder)
+    return (d.dot(axis) >= 0 ? vertices[1] : vertices[0]) + disc_radius_m * across;
+  const Eigen::Vector3d rim = vertices[0] + disc_radius_m * across;
+  return rim.dot(d) >= vertices[1].dot(d) ? rim : vertices[1];
 }
 
 }  // namespace tumble

@@ -62,12 +62,14 @@ Matrix3d shifted(const Matrix3d& inertia, double mass, const Vector3d& d) {
 
 double volume(const ConvexPiece& piece) {
   if (piece.rounded()) return roundedVolume(piece);
+  if (piece.revolved()) return revolvedVolume(piece);
   return integrate(piece, meanVertex(piece)).volume;
 }
 
 MassProperties massProperties(const ConvexPiece& piece, double density) {
   assert(density > 0);
   if (piece.rounded()) return roundedMassProperties(piece, density);
+  if (piece.revolved()) return revolvedMassProperties(piece, density);
   const Vector3d r = meanVertex(piece);
   const VolumeIntegrals in = integrate(piece, r);
   MassProperties mp;

@@ -18,6 +18,9 @@ struct MassProperties {
 // Closed forms for rounded pieces (a sphere, a capsule), rounded_mass.cpp.
 double roundedVolume(const ConvexPiece& piece);
 MassProperties roundedMassProperties(const ConvexPiece& piece, double density);
+// Closed forms for solids of revolution (a cylinder, a cone), revolved_mass.cpp.
+double revolvedVolume(const ConvexPiece& piece);
+MassProperties revolvedMassProperties(const ConvexPiece& piece, double density);
 
 // Volume in m^3 of a closed convex piece.
 double volume(const ConvexPiece& piece);

@@ -121,4 +121,27 @@ ConvexPiece makeCapsule(double radius_m, double length_m) {
   return capsule;
 }
 
+namespace {
+
+ConvexPiece revolution(ConvexPiece::Revolution kind, double radius_m, double height_m, const char* name) {
+  assert(radius_m > 0 && height_m > 0);
+  ConvexPiece piece;
+  piece.name = name;
+  piece.vertices = {Vector3d(0, 0, -height_m / 2), Vector3d(0, 0, height_m / 2)};
+  piece.edges = {{0, 1}};
+  piece.revolution = kind;
+  piece.disc_radius_m = radius_m;
+  return piece;
+}
+
+}  // namespace
+
+ConvexPiece makeCylinder(double radius_m, double height_m) {
+  return revolution(ConvexPiece::Revolution::Cylinder, radius_m, height_m, "cylinder");
+}
+
+ConvexPiece makeCone(double radius_m, double height_m) {
+  return revolution(ConvexPiece::Revolution::Cone, radius_m, height_m, "cone");
+}
+
 }  // namespace tumble

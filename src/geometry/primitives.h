@@ -15,5 +15,9 @@ ConvexPiece makeIcosphere(double radius_m, int subdivisions);
 // capsule (a segment of length_m along z, centred, swept by a ball of radius_m; length 0 is a sphere).
 ConvexPiece makeSphere(double radius_m);
 ConvexPiece makeCapsule(double radius_m, double length_m);
+// Solids of revolution about z, centred on their bounding box as Blender's primitives are: a
+// cylinder (radius_m, height_m), and a cone with its base at z = -height_m/2 and its apex above.
+ConvexPiece makeCylinder(double radius_m, double height_m);
+ConvexPiece makeCone(double radius_m, double height_m);
 
 }  // namespace tumble

@@ -24,14 +24,61 @@ Eigen::Quaterniond eulerExtrinsic(const Eigen::Vector3d& deg, const std::string&
   return q;
 }
 
+// The size fields of a primitive (a body's, or a compound's piece's): each shape reads its own, so
+// a field of another shape is reported as unknown.
+template <class Spec>
+void readPrimitiveSize(ObjectReader& in, const std::string& shape, Spec& spec) {
+  if (shape == "box") {
+    spec.shape = ShapeKind::Box;
+    spec.box_size_m = in.vector3("size_m", spec.box_size_m, kSize);
+  } else if (shape == "sphere") {
+    spec.shape = ShapeKind::Sphere;
+    spec.radius_m = in.number("radius_m", spec.radius_m, kSize);
+  } else if (shape == "capsule") {
+    spec.shape = ShapeKind::Capsule;
+    spec.radius_m = in.number("radius_m", spec.radius_m, kSize);
+    spec.capsule_length_m = in.number("length_m", spec.capsule_length_m, {0, 1e6});
+  } else if (shape == "cylinder" || shape == "cone") {
+    spec.shape = shape == "cylinder" ? ShapeKind::Cylinder : ShapeKind::Cone;
+    spec.radius_m = in.number("radius_m", spec.radius_m, kSize);
+    spec.height_m = in.number("height_m", spec.height_m, kSize);
+  }
+}
+
+const std::vector<std::string> kPrimitives{"box", "sphere", "capsule", "cylinder", "cone"};
+
+// A compound body: primitives placed in the body's frame ("pieces": [{"shape": ..., "position_m":
+// ..., "rotation_deg" or "quat_wxyz": ...}, ...]), one convex piece each.
+void readPieces(ObjectReader& in, BodySpec& body) {
+  const nlohmann::json* list = in.optionalArray("pieces");
+  if (list->empty()) in.fail("pieces", "a compound body needs at least one piece");
+  body.shape = ShapeKind::Compound;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    ObjectReader p = in.element("pieces", i);
+    PieceSpec piece;
+    readPrimitiveSize(p, readChoice(p, "shape", "box", kPrimitives), piece);
+    piece.position_m = p.vector3("position_m", piece.position_m);
+    piece.orientation = readOrientation(p);
+    p.rejectUnknownKeys();
+    body.pieces.push_back(piece);
+  }
+}
+
 void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& scene_dir) {
   auto mesh = in.optionalString("mesh");
-  auto shape = in.has("shape") ? std::optional(readChoice(in, "shape", "", {"box", "sphere", "capsule", "plane"}))
-                               : std::nullopt;
+  std::vector<std::string> shapes = kPrimitives;
+  shapes.push_back("plane");
+  auto shape = in.has("shape") ? std::optional(readChoice(in, "shape", "", shapes)) : std::nullopt;
+  const bool compound = in.has("pieces");
   if (mesh && shape) in.fail("shape", "give either \"mesh\" or \"shape\", not both");
-  if (!mesh && !shape)
-    in.fail("", "a body needs \"mesh\" (a file path) or \"shape\" (\"box\", \"sphere\", \"capsule\" or \"plane\")");
-  if (mesh) {
+  if (compound && (mesh || shape))
+    in.fail("pieces", "give \"pieces\" (a compound body) or \"" + std::string(mesh ? "mesh" : "shape") + "\", not both");
+  if (!mesh && !shape && !compound)
+    in.fail("", "a body needs \"mesh\" (a file path), \"shape\" (\"box\", \"sphere\", \"capsule\", \"cylinder\", "
+                "\"cone\" or \"plane\") or \"pieces\" (a compound of those)");
+  if (compound) {
+    readPieces(in, body);
+  } else if (mesh) {
     checkPathText(in, "mesh", *mesh);
     body.shape = ShapeKind::Mesh;
     body.mesh = (scene_dir / *mesh).lexically_normal();
@@ -45,21 +92,13 @@ void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& sc
       }
     }
     body.mesh_scale = in.number("scale", 1, {0, 1e6, true, false});
-  } else if (*shape == "box") {
-    body.shape = ShapeKind::Box;
-    body.box_size_m = in.vector3("size_m", body.box_size_m, kSize);
-  } else if (*shape == "sphere") {
-    body.shape = ShapeKind::Sphere;
-    body.radius_m = in.number("radius_m", body.radius_m, kSize);
-    body.subdivisions = in.integer("subdivisions", body.subdivisions, 1, 6);
-  } else if (*shape == "capsule") {
-    body.shape = ShapeKind::Capsule;
-    body.radius_m = in.number("radius_m", body.radius_m, kSize);
-    body.capsule_length_m = in.number("length_m", body.capsule_length_m, {0, 1e6});
-    body.subdivisions = in.integer("subdivisions", body.subdivisions, 1, 6);
-  } else {
+  } else if (*shape == "plane") {
     body.shape = ShapeKind::Plane;
+  } else {
+    readPrimitiveSize(in, *shape, body);
   }
+  if (body.shape != ShapeKind::Mesh && body.shape != ShapeKind::Plane && body.shape != ShapeKind::Box)
+    body.subdivisions = in.integer("subdivisions", body.subdivisions, 1, 6);
 }
 
 void readMotionAndMass(ObjectReader& in, BodySpec& body) {

@@ -169,6 +169,13 @@ const nlohmann::json* ObjectReader::optionalArray(const std::string& key) {
   return v;
 }
 
+ObjectReader ObjectReader::element(const std::string& key, std::size_t i) {
+  const nlohmann::json& item = (*get(key))[i];
+  const std::string at = pointerOf(key) + "/" + std::to_string(i);
+  if (!item.is_object()) ObjectReader(ctx_, value_, at).fail("", "expected an object {...}, got " + describeType(item));
+  return ObjectReader(ctx_, item, at);
+}
+
 void ObjectReader::rejectUnknownKeys() const {
   // Of several unknown keys, report the one written first, as a reader scans the file.
   std::string first;

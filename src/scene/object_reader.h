@@ -52,6 +52,8 @@ class ObjectReader {
   Eigen::Vector3d colour(const std::string& key, const Eigen::Vector3d& fallback);
   std::optional<ObjectReader> optionalObject(const std::string& key);
   const nlohmann::json* optionalArray(const std::string& key);
+  // Element i of the array `key` (read with optionalArray first), as an object.
+  ObjectReader element(const std::string& key, std::size_t i);
 
   // Reports the first key that was never asked for, suggesting the closest asked-for name.
   void rejectUnknownKeys() const;

@@ -20,6 +20,15 @@ struct SourceLocation {
   int line = 0, column = 0;
 };
 
+// One primitive of a compound body, placed in the body's frame.
+struct PieceSpec {
+  ShapeKind shape = ShapeKind::Box;                    // Box, Sphere, Capsule, Cylinder or Cone
+  Eigen::Vector3d box_size_m{1, 1, 1};
+  double radius_m = 0.5, capsule_length_m = 1, height_m = 1;
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
 struct BodySpec {
   std::string name;
   ShapeKind shape = ShapeKind::Box;
@@ -27,9 +36,11 @@ struct BodySpec {
   SourceLocation mesh_location;                        // where "mesh" was written
   double mesh_scale = 1;                               // file units -> metres
   Eigen::Vector3d box_size_m{1, 1, 1};                 // full edge lengths, for Box
-  double radius_m = 0.5;                               // for Sphere and Capsule
+  double radius_m = 0.5;                               // for Sphere, Capsule, Cylinder and Cone
   double capsule_length_m = 1;                         // the straight part, along the body's z
-  int subdivisions = 3;                                // how finely a sphere or capsule is drawn
+  double height_m = 1;                                 // for Cylinder and Cone, along the body's z
+  std::vector<PieceSpec> pieces;                       // for Compound
+  int subdivisions = 3;                                // how finely a smooth shape is drawn
                                                        // (the collision shape is exact)
   bool is_static = false;                              // planes are always static
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero(); // of the shape's origin (mesh file origin)

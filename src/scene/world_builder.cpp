@@ -22,12 +22,35 @@ std::string locate(const Scene& scene, const SourceLocation& at) {
   return where.append(": ").append(at.pointer).append(": ");
 }
 
+ConvexPiece primitive(const PieceSpec& p) {
+  switch (p.shape) {
+    case ShapeKind::Sphere: return makeSphere(p.radius_m);
+    case ShapeKind::Capsule: return makeCapsule(p.radius_m, p.capsule_length_m);
+    case ShapeKind::Cylinder: return makeCylinder(p.radius_m, p.height_m);
+    case ShapeKind::Cone: return makeCone(p.radius_m, p.height_m);
+    default: return makeBox(p.box_size_m / 2);
+  }
+}
+
+// Each piece placed in the body's frame; the mass of the union assumes they do not overlap.
+std::vector<ConvexPiece> compoundPieces(const BodySpec& spec) {
+  std::vector<ConvexPiece> pieces;
+  for (const PieceSpec& p : spec.pieces) {
+    pieces.push_back(primitive(p));
+    pieces.back().transform(p.orientation.toRotationMatrix(), p.position_m);
+  }
+  return pieces;
+}
+
 std::vector<ConvexPiece> piecesOf(const Scene& scene, const BodySpec& spec,
                                   std::vector<std::string>& warnings) {
   switch (spec.shape) {
     case ShapeKind::Box: return {makeBox(spec.box_size_m / 2)};
     case ShapeKind::Sphere: return {makeSphere(spec.radius_m)};
     case ShapeKind::Capsule: return {makeCapsule(spec.radius_m, spec.capsule_length_m)};
+    case ShapeKind::Cylinder: return {makeCylinder(spec.radius_m, spec.height_m)};
+    case ShapeKind::Cone: return {makeCone(spec.radius_m, spec.height_m)};
+    case ShapeKind::Compound: return compoundPieces(spec);
     case ShapeKind::Plane: return {};
     case ShapeKind::Mesh: break;
   }

@@ -1,6 +1,6 @@
 // Micro benchmark (not a test): time per box-box collide call in the situations a pile produces,
 // and per ball-box call: an exact sphere against a polyhedral one of 642 vertices (the icosphere a
-// sphere was before spheres were exact), and a capsule.
+// sphere was before spheres were exact), a capsule, and a cylinder standing and lying.
 // Prints CSV: case,calls,ns_per_call,contacts
 #include <ctime>
 #include <cstdio>
@@ -106,5 +106,16 @@ int main() {
                 Eigen::Quaterniond(Eigen::AngleAxisd(u(rng), Vector3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX())));
   };
   run("capsule_lying_on_box", h, h_pill, lying, true);
+  // A can (radius 0.1 m, height 0.2 m) standing and lying on the box: the support query (GJK/EPA).
+  const ConvexPiece can = makeCylinder(0.1, 0.2);
+  const CollisionHull h_can = makeCollisionHull(can);
+  const auto standing = [&](int) {
+    return pose(Vector3d(0.3 * u(rng), 0.3 * u(rng), 0.6 - 1e-6), Eigen::Quaterniond(Eigen::AngleAxisd(u(rng), Vector3d::UnitZ())));
+  };
+  run("cylinder_standing_on_box", h, h_can, standing, true);
+  run("cylinder_lying_on_box", h, h_can, [&](int) {
+    return pose(Vector3d(0.2 * u(rng), 0.2 * u(rng), 0.6 - 1e-6),
+                Eigen::Quaterniond(Eigen::AngleAxisd(u(rng), Vector3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX())));
+  }, true);
   runBroadPhase();
 }

@@ -8,22 +8,16 @@
 #include <random>
 
 #include "collision/narrow_phase.h"
-#include "geometry/mass_properties.h"
+#include "collision_checks.h"
 #include "geometry/primitives.h"
 
 using namespace tumble;
 using Eigen::Vector3d;
+using test::pose;
 
 namespace {
 
 constexpr double kExact = 1e-9;   // m
-
-Eigen::Isometry3d at(const Vector3d& p, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity()) {
-  Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
-  x.linear() = q.toRotationMatrix();
-  x.translation() = p;
-  return x;
-}
 
 // Distance from point p to the axis-aligned box of half extents h centred at the origin, or minus
 // the depth of p inside it.
@@ -52,9 +46,9 @@ TEST_CASE("sphere pairs: depth, normal and separation are the closed forms", "[n
     const double gap = (cb - ca).norm() - ra - rb;
     SatCache cache;
     Vector3d axis;
-    CHECK(separation(ha, at(ca, qa), hb, at(cb, qb), cache, axis) == Approx(gap).margin(kExact));
+    CHECK(separation(ha, pose(ca, qa), hb, pose(cb, qb), cache, axis) == Approx(gap).margin(kExact));
     ContactManifold m;
-    const bool touching = collide(ha, at(ca, qa), hb, at(cb, qb), 0.01, cache, m);
+    const bool touching = collide(ha, pose(ca, qa), hb, pose(cb, qb), 0.01, cache, m);
     REQUIRE(touching == (gap <= 0.01));
     if (!touching) continue;
     REQUIRE(m.points.size() == 1);
@@ -64,7 +58,7 @@ TEST_CASE("sphere pairs: depth, normal and separation are the closed forms", "[n
     const Vector3d mid = 0.5 * ((ca + ra * m.normal) + (cb - rb * m.normal));
     CHECK((m.points[0].position - mid).norm() < kExact);
     if (gap > 0) {
-      const PieceDistance d = pieceDistance(ha, at(ca, qa), hb, at(cb, qb));
+      const PieceDistance d = pieceDistance(ha, pose(ca, qa), hb, pose(cb, qb));
       CHECK(d.distance == Approx(gap).margin(kExact));
       CHECK((d.point_a - (ca + ra * m.normal)).norm() < kExact);
     }
@@ -82,9 +76,9 @@ TEST_CASE("a sphere against a box: the distance from its centre to the box, less
     const Vector3d c(u(rng), u(rng), u(rng));
     const double expected = signedBoxDistance(c, h) - 0.25;
     SatCache cache;
-    CHECK(separation(hbox, at(Vector3d::Zero()), hball, at(c), cache) == Approx(expected).margin(kExact));
+    CHECK(separation(hbox, pose(Vector3d::Zero()), hball, pose(c), cache) == Approx(expected).margin(kExact));
     ContactManifold m;
-    if (!collide(hbox, at(Vector3d::Zero()), hball, at(c), 0.0, cache, m)) {
+    if (!collide(hbox, pose(Vector3d::Zero()), hball, pose(c), 0.0, cache, m)) {
       CHECK(expected > 0);
       continue;
     }
@@ -103,7 +97,7 @@ TEST_CASE("a capsule lying on a box touches along its length: two points, equall
   const Eigen::Quaterniond lying(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
   SatCache cache;
   ContactManifold m;
-  REQUIRE(collide(hbox, at(Vector3d::Zero()), hcap, at({0.2, 0, 0.6 - 1e-6}, lying), 1e-3, cache, m));
+  REQUIRE(collide(hbox, pose(Vector3d::Zero()), hcap, pose({0.2, 0, 0.6 - 1e-6}, lying), 1e-3, cache, m));
   REQUIRE(m.points.size() == 2);
   CHECK((m.normal - Vector3d::UnitZ()).norm() < kExact);
   for (const ContactPoint& p : m.points) CHECK(p.depth == Approx(1e-6).margin(kExact));
@@ -111,7 +105,7 @@ TEST_CASE("a capsule lying on a box touches along its length: two points, equall
   CHECK_FALSE(m.closest_points);   // the box's face holds the normal
   SECTION("hanging over the edge: the support ends at the edge") {
     ContactManifold over;
-    REQUIRE(collide(hbox, at(Vector3d::Zero()), hcap, at({0.9, 0, 0.6}, lying), 1e-3, cache, over));
+    REQUIRE(collide(hbox, pose(Vector3d::Zero()), hcap, pose({0.9, 0, 0.6}, lying), 1e-3, cache, over));
     REQUIRE(over.points.size() == 2);
     const double hi = std::max(over.points[0].position.x(), over.points[1].position.x());
     const double lo = std::min(over.points[0].position.x(), over.points[1].position.x());
@@ -121,7 +115,7 @@ TEST_CASE("a capsule lying on a box touches along its length: two points, equall
   SECTION("tilted: the lower end alone") {
     const Eigen::Quaterniond tilted = Eigen::AngleAxisd(0.01, Vector3d::UnitY()) * lying;
     ContactManifold one;
-    REQUIRE(collide(hbox, at(Vector3d::Zero()), hcap, at({0, 0, 0.6 + 0.4 * std::sin(0.01)}, tilted), 1e-3, cache, one));
+    REQUIRE(collide(hbox, pose(Vector3d::Zero()), hcap, pose({0, 0, 0.6 + 0.4 * std::sin(0.01)}, tilted), 1e-3, cache, one));
     CHECK(one.points.size() == 1);
   }
 }
@@ -132,7 +126,7 @@ TEST_CASE("parallel capsules side by side touch along their overlap", "[narrow][
   SatCache cache;
   ContactManifold m;
   // b beside a along y, shifted along the axis so that it overhangs a's end by 0.1
-  REQUIRE(collide(ha, at(Vector3d::Zero()), hb, at({0, 0.25 - 2e-6, 0.3}), 1e-3, cache, m));
+  REQUIRE(collide(ha, pose(Vector3d::Zero()), hb, pose({0, 0.25 - 2e-6, 0.3}), 1e-3, cache, m));
   REQUIRE(m.points.size() == 2);
   CHECK((m.normal - Vector3d::UnitY()).norm() < kExact);
   for (const ContactPoint& p : m.points) CHECK(p.depth == Approx(2e-6).margin(kExact));
@@ -148,7 +142,7 @@ TEST_CASE("crossed capsules touch at one point, at the distance between their ax
   const Eigen::Quaterniond along_x(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitY()));
   SatCache cache;
   ContactManifold m;
-  REQUIRE(collide(h, at(Vector3d::Zero()), h, at({0.1, 0.1999, 0.2}, along_x), 1e-3, cache, m));
+  REQUIRE(collide(h, pose(Vector3d::Zero()), h, pose({0.1, 0.1999, 0.2}, along_x), 1e-3, cache, m));
   REQUIRE(m.points.size() == 1);
   CHECK(m.points[0].depth == Approx(1e-4).margin(kExact));
   CHECK((m.normal - Vector3d::UnitY()).norm() < kExact);
@@ -160,12 +154,12 @@ TEST_CASE("overlapping cores still part along the least overlap", "[narrow][roun
   const CollisionHull hbox = makeCollisionHull(box), hball = makeCollisionHull(ball);
   SatCache cache;
   ContactManifold m;
-  REQUIRE(collide(hbox, at(Vector3d::Zero()), hball, at({0.2, 0.1, 0.9}), 0.0, cache, m));
+  REQUIRE(collide(hbox, pose(Vector3d::Zero()), hball, pose({0.2, 0.1, 0.9}), 0.0, cache, m));
   CHECK((m.normal - Vector3d::UnitZ()).norm() < kExact);
   CHECK(deepest(m) == Approx(0.2).margin(kExact));
   // two balls with the same centre: some unit normal, depth the sum of the radii
   ContactManifold same;
-  REQUIRE(collide(hball, at(Vector3d::Zero()), hball, at(Vector3d::Zero()), 0.0, cache, same));
+  REQUIRE(collide(hball, pose(Vector3d::Zero()), hball, pose(Vector3d::Zero()), 0.0, cache, same));
   CHECK(same.normal.norm() == Approx(1.0));
   CHECK(deepest(same) == Approx(0.2).margin(kExact));
 }
@@ -173,43 +167,12 @@ TEST_CASE("overlapping cores still part along the least overlap", "[narrow][roun
 TEST_CASE("rounded pieces on the ground: a ball at one point, a lying capsule at both ends", "[ground][rounded]") {
   const ConvexPiece ball = makeSphere(0.3), capsule = makeCapsule(0.1, 2.0);
   ContactManifold m;
-  REQUIRE(collideGround(ball, at({1, 2, 0.3 - 1e-7}), 0, 1e-3, m));
+  REQUIRE(collideGround(ball, pose({1, 2, 0.3 - 1e-7}), 0, 1e-3, m));
   REQUIRE(m.points.size() == 1);
   CHECK(m.points[0].depth == Approx(1e-7).margin(kExact));
   CHECK((m.points[0].position - Vector3d(1, 2, -0.5e-7)).norm() < kExact);
-  CHECK(groundSeparation(ball, at({0, 0, 1}), 0.5) == Approx(0.2).margin(kExact));
+  CHECK(groundSeparation(ball, pose({0, 0, 1}), 0.5) == Approx(0.2).margin(kExact));
   const Eigen::Quaterniond lying(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX()));
-  REQUIRE(collideGround(capsule, at({0, 0, 0.1}, lying), 0, 1e-3, m));
+  REQUIRE(collideGround(capsule, pose({0, 0, 0.1}, lying), 0, 1e-3, m));
   CHECK(m.points.size() == 2);
-}
-
-TEST_CASE("rounded mass properties are the closed forms", "[geometry][rounded]") {
-  const double rho = 1000, r = 0.2, L = 0.6;
-  const MassProperties ball = massProperties(makeSphere(r), rho);
-  const double m_ball = rho * 4.0 / 3.0 * M_PI * r * r * r;
-  CHECK(ball.mass == Approx(m_ball).epsilon(1e-14));
-  CHECK(ball.inertia(0, 0) == Approx(0.4 * m_ball * r * r).epsilon(1e-14));
-  CHECK(ball.inertia(0, 1) == 0);
-  // A capsule, against a stack of thin discs along its axis: radius rho(z) = r on the straight part
-  // and sqrt(r^2 - (|z| - L/2)^2) on the ends; a disc of mass dm has dm rho^2 / 2 about the axis
-  // and dm (rho^2 / 4 + z^2) across. Simpson's rule on each part (the integrands are polynomials
-  // of degree 4 in z: 2000 intervals leave 1e-13).
-  const MassProperties capsule = massProperties(makeCapsule(r, L), rho);
-  double mass = 0, axial = 0, across = 0;
-  auto integrate = [&](double z0, double z1) {
-    const int n = 2000;
-    const double h = (z1 - z0) / n;
-    for (int i = 0; i <= n; ++i) {
-      const double z = z0 + i * h, w = (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * h / 3;
-      const double end = std::max(0.0, std::abs(z) - L / 2), rho2 = r * r - end * end;
-      const double dm = rho * M_PI * rho2 * w;
-      mass += dm, axial += dm * rho2 / 2, across += dm * (rho2 / 4 + z * z);
-    }
-  };
-  integrate(-L / 2 - r, -L / 2), integrate(-L / 2, L / 2), integrate(L / 2, L / 2 + r);
-  CHECK(capsule.mass == Approx(mass).epsilon(1e-12));
-  CHECK(capsule.inertia(2, 2) == Approx(axial).epsilon(1e-12));
-  CHECK(capsule.inertia(0, 0) == Approx(across).epsilon(1e-12));
-  CHECK(capsule.inertia(1, 1) == Approx(across).epsilon(1e-12));
-  CHECK(volume(makeCapsule(r, 0)) == Approx(volume(makeSphere(r))).epsilon(1e-15));
 }

@@ -64,7 +64,7 @@ void checkZeno(const ZenoOutcome& out, double e, double seconds) {
     INFO("apex " << k << ": " << out.apexes[k - 1] << " m, expected " << expected);
     // Within 1e-6 of the drop height: an exact sphere lands where the contact tolerance (1e-6 m)
     // takes the landing, so each apex may be off by that much, and no more (measured 2026-11-24:
-    // at most 8.4e-7 m with e = 0.5, 8.2e-7 m with e = 0.9). An icosphere's facets had it off by
+    // at most 8.4e-7 m with e = 0.5, 1.8e-7 m with e = 0.9). An icosphere's facets had it off by
     // up to 0.5 %.
     CHECK(std::abs(out.apexes[k - 1] - expected) < 1e-6 * kDrop);
   }

@@ -156,3 +156,50 @@ TEST_CASE("a shallow overlap at the start is a warning, and bodies that only tou
     {"name": "wall", "shape": "box", "static": true, "position_m": [0, 0, 0]}]})", "statics.json");
   CHECK(buildWorld(statics).warnings.empty());
 }
+
+TEST_CASE("a compound dumbbell: two balls on a bar, its mass and inertia the pieces' sum", "[dynamics]") {
+  // Balls of radius 0.1 m centred at x = +-0.3, a bar of radius 0.02 m and length 0.4 m along x
+  // between them (its ends touch the balls: no overlap, so the union's mass is the sum).
+  Scene s = parseScene(R"({"schema_version": 1, "bodies": [
+    {"name": "dumbbell", "position_m": [0, 0, 1], "density_kg_m3": 1000, "pieces": [
+      {"shape": "sphere", "radius_m": 0.1, "position_m": [-0.3, 0, 0]},
+      {"shape": "cylinder", "radius_m": 0.02, "height_m": 0.4, "rotation_deg": [0, 90, 0]},
+      {"shape": "sphere", "radius_m": 0.1, "position_m": [0.3, 0, 0]}]}]})", "d.json");
+  const BuiltWorld built = buildWorld(s);
+  const RigidBody& b = built.world.bodies[0];
+  const double ball = 1000 * 4.0 / 3.0 * M_PI * 1e-3, bar = 1000 * M_PI * 4e-4 * 0.4;
+  CHECK(b.shape == ShapeKind::Compound);
+  CHECK(b.pieces.size() == 3);
+  CHECK(b.mass == Approx(2 * ball + bar).epsilon(1e-12));
+  CHECK((b.x - Eigen::Vector3d(0, 0, 1)).norm() < 1e-12);
+  // about the bar's axis, and across it (parallel axes for the balls)
+  const double along = 2 * 0.4 * ball * 0.01 + 0.5 * bar * 4e-4;
+  const double across = 2 * (0.4 * ball * 0.01 + ball * 0.09) + bar * (3 * 4e-4 + 0.16) / 12;
+  Eigen::Vector3d moments = b.inertia_body;
+  std::sort(moments.data(), moments.data() + 3);
+  CHECK(moments[0] == Approx(along).epsilon(1e-12));
+  CHECK(moments[1] == Approx(across).epsilon(1e-12));
+  CHECK(moments[2] == Approx(across).epsilon(1e-12));
+}
+
+TEST_CASE("a compound body's bad pieces are located", "[scene]") {
+  auto failure = [](const char* text) {
+    try {
+      parseScene(text, "c.json");
+    } catch (const Error& e) {
+      CHECK(e.code() == ExitCode::BadInput);
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK_THAT(failure(R"({"schema_version": 1, "bodies": [{"pieces": []}]})"),
+             Catch::Contains("/bodies/0/pieces: a compound body needs at least one piece"));
+  CHECK_THAT(failure(R"({"schema_version": 1, "bodies": [{"shape": "box", "pieces": [{"shape": "box"}]}]})"),
+             Catch::Contains("/bodies/0/pieces: give \"pieces\" (a compound body) or \"shape\", not both"));
+  CHECK_THAT(failure(R"({"schema_version": 1, "bodies": [{"pieces": [{"shape": "sphere", "radius_m": -1}]}]})"),
+             Catch::Contains("/bodies/0/pieces/0/radius_m: -1 is outside"));
+  CHECK_THAT(failure(R"({"schema_version": 1, "bodies": [{"pieces": [{"shape": "plane"}]}]})"),
+             Catch::Contains("/bodies/0/pieces/0/shape"));
+  CHECK_THAT(failure(R"({"schema_version": 1, "bodies": [{"pieces": [3]}]})"),
+             Catch::Contains("/bodies/0/pieces/0: expected an object"));
+}

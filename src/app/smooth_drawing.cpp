@@ -1,4 +1,4 @@
-#include "app/rounded_drawing.h"
+#include "app/smooth_drawing.h"
 
 #include <algorithm>
 #include <cassert>
@@ -42,6 +42,37 @@ void appendRoundedMesh(const ConvexPiece& piece, int subdivisions, DrawMesh& mes
       if (std::cos(lo.lat) > 1e-12) corner(lo, j), corner(lo, j + 1), corner(hi, j + 1);
       if (std::cos(hi.lat) > 1e-12) corner(lo, j), corner(hi, j + 1), corner(hi, j);
     }
+  }
+}
+
+void appendRevolvedMesh(const ConvexPiece& piece, int subdivisions, DrawMesh& mesh) {
+  assert(piece.revolved() && piece.vertices.size() == 2);
+  const int around = 8 << std::clamp(subdivisions, 1, 6);
+  const Eigen::Vector3d base = piece.vertices[0], top = piece.vertices[1];
+  const Eigen::Vector3d axis = (top - base).normalized();
+  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+  const double r = piece.disc_radius_m, h = (top - base).norm();
+  const bool cone = piece.revolution == ConvexPiece::Revolution::Cone;
+  const double top_r = cone ? 0.0 : r;
+  auto radial = [&](int j) {
+    const double lon = 2 * M_PI * j / around;
+    return Eigen::Vector3d(std::cos(lon) * u + std::sin(lon) * v);
+  };
+  // The side's normal leans towards the apex by the cone's half-angle: (h, r) across and along.
+  const double lean = cone ? r / std::hypot(r, h) : 0.0, out = cone ? h / std::hypot(r, h) : 1.0;
+  auto push = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+    mesh.positions.push_back(p.cast<float>());
+    mesh.normals.push_back(n.cast<float>());
+  };
+  for (int j = 0; j < around; ++j) {
+    const Eigen::Vector3d a = radial(j), b = radial(j + 1);
+    const Eigen::Vector3d na = out * a + lean * axis, nb = out * b + lean * axis;
+    // side, counter-clockwise seen from outside (longitude grows about +axis)
+    push(base + r * a, na), push(base + r * b, nb), push(top + top_r * b, nb);
+    if (!cone) push(base + r * a, na), push(top + top_r * b, nb), push(top + top_r * a, na);
+    // the base disc faces -axis, the top disc +axis
+    push(base, -axis), push(base + r * b, -axis), push(base + r * a, -axis);
+    if (!cone) push(top, axis), push(top + r * a, axis), push(top + r * b, axis);
   }
 }
 
