@@ -17,6 +17,7 @@ const char* shapeName(ShapeKind s) {
     case ShapeKind::Sphere: return "sphere";
     case ShapeKind::Capsule: return "capsule";
     case ShapeKind::Cylinder: return "cylinder";
+    case ShapeKind::Tube: return "tube";
     case ShapeKind::Cone: return "cone";
     case ShapeKind::Compound: return "compound";
     case ShapeKind::Plane: return "plane";

@@ -53,6 +53,7 @@ void appendRevolvedMesh(const ConvexPiece& piece, int subdivisions, DrawMesh& me
   const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
   const double r = piece.disc_radius_m, h = (top - base).norm();
   const bool cone = piece.revolution == ConvexPiece::Revolution::Cone;
+  const double bore = piece.bore_radius_m;
   const double top_r = cone ? 0.0 : r;
   auto radial = [&](int j) {
     const double lon = 2 * M_PI * j / around;
@@ -70,6 +71,15 @@ void appendRevolvedMesh(const ConvexPiece& piece, int subdivisions, DrawMesh& me
     // side, counter-clockwise seen from outside (longitude grows about +axis)
     push(base + r * a, na), push(base + r * b, nb), push(top + top_r * b, nb);
     if (!cone) push(base + r * a, na), push(top + top_r * b, nb), push(top + top_r * a, na);
+    if (bore > 0) {   // a tube: its bore's wall faces the axis, its ends are rings
+      push(base + bore * a, -a), push(top + bore * b, -b), push(base + bore * b, -b);
+      push(base + bore * a, -a), push(top + bore * a, -a), push(top + bore * b, -b);
+      push(base + bore * a, -axis), push(base + r * b, -axis), push(base + r * a, -axis);
+      push(base + bore * a, -axis), push(base + bore * b, -axis), push(base + r * b, -axis);
+      push(top + bore * a, axis), push(top + r * a, axis), push(top + r * b, axis);
+      push(top + bore * a, axis), push(top + r * b, axis), push(top + bore * b, axis);
+      continue;
+    }
     // the base disc faces -axis, the top disc +axis
     push(base, -axis), push(base + r * b, -axis), push(base + r * a, -axis);
     if (!cone) push(top, axis), push(top + r * a, axis), push(top + r * b, axis);

@@ -29,6 +29,10 @@ struct ConvexPiece {
   enum class Revolution : std::uint8_t { None, Cylinder, Cone };
   Revolution revolution = Revolution::None;
   double disc_radius_m = 0;
+  // A tube: a cylinder with a bore of this radius along its axis. Only its mass and its picture
+  // are hollow; other pieces collide with its outer cylinder (its convex hull), as a wheel's tyre
+  // or a pipe rolling on the ground needs, but nothing can enter the bore.
+  double bore_radius_m = 0;
 
   bool rounded() const { return radius_m > 0; }
   bool revolved() const { return revolution != Revolution::None; }

@@ -140,6 +140,13 @@ ConvexPiece makeCylinder(double radius_m, double height_m) {
   return revolution(ConvexPiece::Revolution::Cylinder, radius_m, height_m, "cylinder");
 }
 
+ConvexPiece makeTube(double radius_m, double inner_radius_m, double height_m) {
+  assert(inner_radius_m >= 0 && inner_radius_m < radius_m);
+  ConvexPiece tube = revolution(ConvexPiece::Revolution::Cylinder, radius_m, height_m, "tube");
+  tube.bore_radius_m = inner_radius_m;
+  return tube;
+}
+
 ConvexPiece makeCone(double radius_m, double height_m) {
   return revolution(ConvexPiece::Revolution::Cone, radius_m, height_m, "cone");
 }

@@ -19,5 +19,7 @@ ConvexPiece makeCapsule(double radius_m, double length_m);
 // cylinder (radius_m, height_m), and a cone with its base at z = -height_m/2 and its apex above.
 ConvexPiece makeCylinder(double radius_m, double height_m);
 ConvexPiece makeCone(double radius_m, double height_m);
+// A tube: a cylinder of radius_m with a bore of inner_radius_m (< radius_m), hollow in mass only.
+ConvexPiece makeTube(double radius_m, double inner_radius_m, double height_m);
 
 }  // namespace tumble

@@ -1,5 +1,5 @@
-// Mass properties of solids of revolution in closed form: a solid cylinder, and a solid cone (its
-// centre of mass a quarter of the height above the base).
+// Mass properties of solids of revolution in closed form: a cylinder (a tube: the outer cylinder
+// less its bore), and a solid cone (its centre of mass a quarter of the height above the base).
 #include <cassert>
 #include <cmath>
 
@@ -29,7 +29,8 @@ bool isCone(const ConvexPiece& piece) { return piece.revolution == ConvexPiece::
 
 double revolvedVolume(const ConvexPiece& piece) {
   const double r = piece.disc_radius_m, h = axisOf(piece).height;
-  return M_PI * r * r * h / (isCone(piece) ? 3 : 1);
+  if (isCone(piece)) return M_PI * r * r * h / 3;
+  return M_PI * (r * r - piece.bore_radius_m * piece.bore_radius_m) * h;
 }
 
 MassProperties revolvedMassProperties(const ConvexPiece& piece, double density) {
@@ -43,9 +44,11 @@ MassProperties revolvedMassProperties(const ConvexPiece& piece, double density) 
     axial = 0.3 * mp.mass * r * r;
     across = mp.mass * (3 * r * r / 20 + 3 * h * h / 80);
   } else {
+    // the outer cylinder less the bore: r^2 becomes r^2 + b^2 in both moments
+    const double b = piece.bore_radius_m, r2 = r * r + b * b;
     mp.center = a.base + 0.5 * h * a.unit;
-    axial = 0.5 * mp.mass * r * r;
-    across = mp.mass * (3 * r * r + h * h) / 12;
+    axial = 0.5 * mp.mass * r2;
+    across = mp.mass * (3 * r2 + h * h) / 12;
   }
   const Eigen::Matrix3d along = a.unit * a.unit.transpose();
   mp.inertia = across * (Eigen::Matrix3d::Identity() - along) + axial * along;

@@ -42,10 +42,18 @@ void readPrimitiveSize(ObjectReader& in, const std::string& shape, Spec& spec) {
     spec.shape = shape == "cylinder" ? ShapeKind::Cylinder : ShapeKind::Cone;
     spec.radius_m = in.number("radius_m", spec.radius_m, kSize);
     spec.height_m = in.number("height_m", spec.height_m, kSize);
+  } else if (shape == "tube") {
+    spec.shape = ShapeKind::Tube;
+    spec.radius_m = in.number("radius_m", spec.radius_m, kSize);
+    spec.inner_radius_m = in.number("inner_radius_m", 0.8 * spec.radius_m, {0, 1e6});
+    if (spec.inner_radius_m >= spec.radius_m)
+      in.fail("inner_radius_m", "a tube's bore (" + formatNumber(spec.inner_radius_m) +
+                                    " m) must be narrower than its radius (" + formatNumber(spec.radius_m) + " m)");
+    spec.height_m = in.number("height_m", spec.height_m, kSize);
   }
 }
 
-const std::vector<std::string> kPrimitives{"box", "sphere", "capsule", "cylinder", "cone"};
+const std::vector<std::string> kPrimitives{"box", "sphere", "capsule", "cylinder", "tube", "cone"};
 
 // A compound body: primitives placed in the body's frame ("pieces": [{"shape": ..., "position_m":
 // ..., "rotation_deg" or "quat_wxyz": ...}, ...]), one convex piece each.
@@ -75,7 +83,7 @@ void readShape(ObjectReader& in, BodySpec& body, const std::filesystem::path& sc
     in.fail("pieces", "give \"pieces\" (a compound body) or \"" + std::string(mesh ? "mesh" : "shape") + "\", not both");
   if (!mesh && !shape && !compound)
     in.fail("", "a body needs \"mesh\" (a file path), \"shape\" (\"box\", \"sphere\", \"capsule\", \"cylinder\", "
-                "\"cone\" or \"plane\") or \"pieces\" (a compound of those)");
+                "\"tube\", \"cone\" or \"plane\") or \"pieces\" (a compound of those)");
   if (compound) {
     readPieces(in, body);
   } else if (mesh) {

@@ -24,7 +24,7 @@ struct SourceLocation {
 struct PieceSpec {
   ShapeKind shape = ShapeKind::Box;                    // Box, Sphere, Capsule, Cylinder or Cone
   Eigen::Vector3d box_size_m{1, 1, 1};
-  double radius_m = 0.5, capsule_length_m = 1, height_m = 1;
+  double radius_m = 0.5, capsule_length_m = 1, height_m = 1, inner_radius_m = 0.4;
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
@@ -38,7 +38,8 @@ struct BodySpec {
   Eigen::Vector3d box_size_m{1, 1, 1};                 // full edge lengths, for Box
   double radius_m = 0.5;                               // for Sphere, Capsule, Cylinder and Cone
   double capsule_length_m = 1;                         // the straight part, along the body's z
-  double height_m = 1;                                 // for Cylinder and Cone, along the body's z
+  double height_m = 1;                                 // for Cylinder, Tube and Cone, along the body's z
+  double inner_radius_m = 0.4;                         // a Tube's bore
   std::vector<PieceSpec> pieces;                       // for Compound
   int subdivisions = 3;                                // how finely a smooth shape is drawn
                                                        // (the collision shape is exact)

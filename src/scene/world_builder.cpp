@@ -27,6 +27,7 @@ ConvexPiece primitive(const PieceSpec& p) {
     case ShapeKind::Sphere: return makeSphere(p.radius_m);
     case ShapeKind::Capsule: return makeCapsule(p.radius_m, p.capsule_length_m);
     case ShapeKind::Cylinder: return makeCylinder(p.radius_m, p.height_m);
+    case ShapeKind::Tube: return makeTube(p.radius_m, p.inner_radius_m, p.height_m);
     case ShapeKind::Cone: return makeCone(p.radius_m, p.height_m);
     default: return makeBox(p.box_size_m / 2);
   }
@@ -49,6 +50,7 @@ std::vector<ConvexPiece> piecesOf(const Scene& scene, const BodySpec& spec,
     case ShapeKind::Sphere: return {makeSphere(spec.radius_m)};
     case ShapeKind::Capsule: return {makeCapsule(spec.radius_m, spec.capsule_length_m)};
     case ShapeKind::Cylinder: return {makeCylinder(spec.radius_m, spec.height_m)};
+    case ShapeKind::Tube: return {makeTube(spec.radius_m, spec.inner_radius_m, spec.height_m)};
     case ShapeKind::Cone: return {makeCone(spec.radius_m, spec.height_m)};
     case ShapeKind::Compound: return compoundPieces(spec);
     case ShapeKind::Plane: return {};

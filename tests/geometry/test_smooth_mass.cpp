@@ -62,6 +62,14 @@ TEST_CASE("smooth shapes' mass properties are the closed forms", "[geometry][mas
     s.add(-L / 2, L / 2, rho, [&](double) { return r; });
     checkAgainst(massProperties(makeCylinder(r, L), rho), s, 0);
   }
+  SECTION("tube: the cylinder less its bore") {
+    DiscStack outer, bore;
+    outer.add(-L / 2, L / 2, rho, [&](double) { return r; });
+    bore.add(-L / 2, L / 2, rho, [&](double) { return 0.75 * r; });
+    DiscStack s;
+    s.mass = outer.mass - bore.mass, s.axial = outer.axial - bore.axial, s.across = outer.across - bore.across;
+    checkAgainst(massProperties(makeTube(r, 0.75 * r, L), rho), s, 0);
+  }
   SECTION("cone: base at -L/2, apex at +L/2, centre of mass a quarter of the height up") {
     DiscStack s;
     s.add(-L / 2, L / 2, rho, [&](double z) { return r * (L / 2 - z) / L; });

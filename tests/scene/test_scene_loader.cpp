@@ -155,6 +155,8 @@ TEST_CASE("each bad input names file, line, column and field", "[scene]") {
        "/bodies/0/height_m: 0 is outside [1e-06, 1000000]", ExitCode::BadInput},
       {"a cylinder of no radius", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"cylinder\", \"radius_m\": 0}]}",
        "/bodies/0/radius_m: 0 is outside [1e-06, 1000000]", ExitCode::BadInput},
+      {"a tube with no wall", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"tube\", \"radius_m\": 0.1, \"inner_radius_m\": 0.1}]}",
+       "/bodies/0/inner_radius_m: a tube's bore (0.1 m) must be narrower than its radius (0.1 m)", ExitCode::BadInput},
       {"a box's size on a capsule", "{\"schema_version\": 1, \"bodies\": [{\"shape\": \"capsule\", \"size_m\": [1, 1, 1]}]}",
        "/bodies/0/size_m: unknown field", ExitCode::BadInput},
       {"neither mesh nor shape", "{\"schema_version\": 1, \"bodies\": [{\"name\": \"x\"}]}", "needs \"mesh\"", ExitCode::BadInput},
