@@ -30,7 +30,7 @@ void printBodies(const Scene& scene, const World& world) {
   for (const RigidBody& b : world.bodies) moving += b.is_static ? 0 : 1;
   std::printf("bodies    %zu (%d moving, %zu static)\n", world.bodies.size(), moving,
               world.bodies.size() - moving);
-  std::printf("  %-16s %-7s %6s %10s  %-32s %s\n", "name", "shape", "pieces", "mass_kg",
+  std::printf("  %-16s %-8s %6s %10s  %-32s %s\n", "name", "shape", "pieces", "mass_kg",
               "principal inertia kg m^2", "centre of mass m");
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& b = world.bodies[i];
@@ -39,7 +39,7 @@ void printBodies(const Scene& scene, const World& world) {
     std::snprintf(inertia, sizeof inertia, b.shape == ShapeKind::Plane ? "-" : "(%.4g, %.4g, %.4g)",
                   b.inertia_body.x(), b.inertia_body.y(), b.inertia_body.z());
     std::snprintf(com, sizeof com, "(%.4g, %.4g, %.4g)", b.x.x(), b.x.y(), b.x.z());
-    std::printf("  %-16s %-7s %6zu %10s  %-32s %s%s\n", b.name.c_str(), shapeName(b.shape),
+    std::printf("  %-16s %-8s %6zu %10s  %-32s %s%s\n", b.name.c_str(), shapeName(b.shape),
                 b.pieces.size(), mass, inertia, com, b.is_static ? "  static" : "");
     if (scene.bodies[i].shape == ShapeKind::Mesh)
       std::printf("  %-16s mesh %s\n", "", scene.bodies[i].mesh.string().c_str());
