@@ -29,32 +29,8 @@ constexpr int kRimPoints = 8;
 
 const ConvexPiece& pieceOf(const HullView& h) { return *h.hull->piece; }
 
-// The unit direction of d square to the axis (zero when d is along it), made square once more after
-// normalising: for d nearly along the axis, one projection leaves a component along it of rounding
-// over the small remainder, and the rim point would sit that far off its disc's plane (4e-7 of
-// the radius was seen), which the query's exactness does not survive.
-Eigen::Vector3d acrossAxis(const Eigen::Vector3d& d, const Eigen::Vector3d& axis) {
-  Eigen::Vector3d across = d - d.dot(axis) * axis;
-  const double n = across.norm();
-  if (!(n > 1e-12 * d.norm())) return Eigen::Vector3d::Zero();
-  across /= n;
-  across -= across.dot(axis) * axis;
-  return across.normalized();
-}
-
 Eigen::Vector3d supportOf(const HullView& h, const Eigen::Vector3d& d) {
-  const ConvexPiece& p = pieceOf(h);
-  int best = 0;
-  for (int i = 1; i < h.vertexCount(); ++i)
-    if (h.vertices[i].dot(d) > h.vertices[best].dot(d)) best = i;
-  if (p.rounded()) return h.vertices[best] + p.radius_m * d.normalized();
-  if (!p.revolved()) return h.vertices[best];
-  const Eigen::Vector3d axis = (h.vertices[1] - h.vertices[0]).normalized();
-  const Eigen::Vector3d across = acrossAxis(d, axis);
-  if (p.revolution == ConvexPiece::Revolution::Cylinder)
-    return (d.dot(axis) >= 0 ? h.vertices[1] : h.vertices[0]) + p.disc_radius_m * across;
-  const Eigen::Vector3d rim = h.vertices[0] + p.disc_radius_m * across;
-  return rim.dot(d) >= h.vertices[1].dot(d) ? rim : h.vertices[1];
+  return pieceOf(h).supportAt(h.vertices, static_cast<std::size_t>(h.vertexCount()), d);
 }
 
 SupportQuery query(const HullView& a, const HullView& b) {

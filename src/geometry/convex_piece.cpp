@@ -40,27 +40,33 @@ double ConvexPiece::rollingRadius(const Eigen::Vector3d& n) const {
 }
 
 Eigen::Vector3d ConvexPiece::support(const Eigen::Vector3d& d) const {
+  return supportAt(vertices.data(), vertices.size(), d);
+}
+
+Eigen::Vector3d ConvexPiece::supportAt(const Eigen::Vector3d* v, std::size_t count, const Eigen::Vector3d& d) const {
   std::size_t best = 0;
-  for (std::size_t i = 1; i < vertices.size(); ++i)
-    if (vertices[i].dot(d) > vertices[best].dot(d)) best = i;
-  if (rounded()) return vertices[best] + radius_m * d.normalized();
-  if (!revolved()) return vertices[best];
+  for (std::size_t i = 1; i < count; ++i)
+    if (v[i].dot(d) > v[best].dot(d)) best = i;
+  if (rounded()) return v[best] + radius_m * d.normalized();
+  if (!revolved()) return v[best];
   // The disc at an end of the axis reaches farthest along d at its rim point in d's direction
   // across the axis; a cylinder takes the end farther along d, a cone the farther of its base rim
-  // point and its apex.
-  const Eigen::Vector3d axis = (vertices[1] - vertices[0]).normalized();
+  // point and its apex. That direction is made square to the axis once more after normalising:
+  // for d nearly along the axis, one projection leaves a component along it of rounding over the
+  // small remainder, and the rim point would sit that far off its disc's plane (4e-7 of the radius
+  // was seen), which the support query's exactness does not survive.
+  const Eigen::Vector3d axis = (v[1] - v[0]).normalized();
   Eigen::Vector3d across = d - d.dot(axis) * axis;
   const double n = across.norm();
-  if (n > 1e-12 * d.norm()) {   // square to the axis once more after normalising (rounding)
+  if (n > 1e-12 * d.norm()) {
     across /= n;
     across = (across - across.dot(axis) * axis).normalized();
   } else {
     across.setZero();
   }
-  if (revolution == Revolution::Cylinder)
-    return (d.dot(axis) >= 0 ? vertices[1] : vertices[0]) + disc_radius_m * across;
-  const Eigen::Vector3d rim = vertices[0] + disc_radius_m * across;
-  return rim.dot(d) >= vertices[1].dot(d) ? rim : vertices[1];
+  if (revolution == Revolution::Cylinder) return (d.dot(axis) >= 0 ? v[1] : v[0]) + disc_radius_m * across;
+  const Eigen::Vector3d rim = v[0] + disc_radius_m * across;
+  return rim.dot(d) >= v[1].dot(d) ? rim : v[1];
 }
 
 }  // namespace tumble

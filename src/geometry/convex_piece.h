@@ -39,6 +39,9 @@ struct ConvexPiece {
   bool smooth() const { return rounded() || revolved(); }   // no face list: not for the SAT
   // The point of the piece farthest along d (body frame; any d != 0).
   Eigen::Vector3d support(const Eigen::Vector3d& d) const;
+  // The same with the piece's vertices moved rigidly to `moved` (count of them, in the same order;
+  // the narrow phase's working frame): its radii do not change under the move.
+  Eigen::Vector3d supportAt(const Eigen::Vector3d* moved, std::size_t count, const Eigen::Vector3d& d) const;
   // The radius of the surface that rolls over a contact of normal n (body frame, unit): a rounded
   // piece's radius, a cylinder's on its side; 0 where the contact stays on the same material
   // points (a face, an edge, a rim, a cone's side: its curvature along the side is not modelled).
