@@ -16,8 +16,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.step.integrator)")
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
   command.add_option("--contact-model", o.contact_model,
-                     "baraff | time_stepping (overrides simulation.step.model)")
-      ->check(CLI::IsMember({"baraff", "time_stepping"}));
+                     "baraff | time_stepping | penalty (overrides simulation.contact_model; penalty takes the "
+                     "scene's \"penalty\" settings or their defaults)")
+      ->check(CLI::IsMember({"baraff", "time_stepping", "penalty"}));
   command.add_flag("--no-sleep", o.no_sleep,
                    "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.step.sleep.enabled)");
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
@@ -43,7 +44,9 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
   if (!o.integrator.empty())
     scene.simulation.step.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
   if (!o.contact_model.empty())
-    scene.simulation.step.model = o.contact_model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
+    scene.simulation.step.model = o.contact_model == "baraff"    ? ContactModel::Baraff
+                                  : o.contact_model == "penalty" ? ContactModel::Penalty
+                                                                 : ContactModel::TimeStepping;
   if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
   return scene;
 }

@@ -20,4 +20,13 @@ std::vector<BodyExtent> extentsOf(const World& world) {
   return out;
 }
 
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach) {
+  reach.assign(world.bodies.size(), 0.0);
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& b = world.bodies[i];
+    if (b.is_static) continue;
+    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
+  }
+}
+
 }  // namespace tumble

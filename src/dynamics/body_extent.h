@@ -18,4 +18,10 @@ struct BodyExtent {
 BodyExtent extentOf(const RigidBody& body);
 std::vector<BodyExtent> extentsOf(const World& world);
 
+// How far each body's points can travel within a step (m; 0 for static bodies): the speculative
+// margin the detector adds for it, so that every pair that can touch during the step is a contact
+// at its start (the time-stepping and penalty models): (|v| + |g| dt + |w| r) dt, with r the
+// body's radius about its centre of mass.
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach);
+
 }  // namespace tumble

@@ -21,6 +21,9 @@ class ContactModelStep {
   virtual void step(World& world, const StepSettings& settings, SharedStages& shared) = 0;
   // One line per stage this model runs in this scene, in order (for `tumble check`).
   virtual std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const = 0;
+  // Energy the model holds outside the bodies' motion at the end of the step (J): a compliant
+  // contact's spring. The energy check counts it, so an elastic bounce is not energy from nowhere.
+  virtual double storedEnergy() const { return 0; }
 };
 
 }  // namespace tumble

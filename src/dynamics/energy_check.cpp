@@ -31,8 +31,9 @@ EnergyCheck::Sample EnergyCheck::sample(const World& world) {
   return s;
 }
 
-std::optional<EnergyGain> EnergyCheck::afterStep(const World& world) {
+std::optional<EnergyGain> EnergyCheck::afterStep(const World& world, double stored) {
   recent_.push_back(sample(world));
+  recent_.back().total += stored;
   largest_kinetic_ = std::max(largest_kinetic_, kinetic_);
   lowest_potential_ = std::min(lowest_potential_, potential_);
   highest_potential_ = std::max(highest_potential_, potential_);

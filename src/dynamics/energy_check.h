@@ -32,8 +32,9 @@ class EnergyCheck {
  public:
   EnergyCheck(const World& world, double share, double drift_m, int repaid_within);
   // The gain, if the world's total energy now exceeds its running lowest by more than the
-  // tolerance; updates the lowest and the scale.
-  std::optional<EnergyGain> afterStep(const World& world);
+  // tolerance; updates the lowest and the scale. `stored` (J) is energy the contact model holds
+  // (a compliant contact's spring), counted in the total.
+  std::optional<EnergyGain> afterStep(const World& world, double stored = 0);
 
  private:
   struct Sample {

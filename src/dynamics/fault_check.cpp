@@ -92,8 +92,8 @@ std::optional<Fault> FaultCheck::nonFinite(const World& world) const {
   return f;
 }
 
-std::optional<Fault> FaultCheck::runawayEnergy(const World& world) const {
-  double total = 0, largest_gain = -kInf;
+std::optional<Fault> FaultCheck::runawayEnergy(const World& world, double stored) const {
+  double total = stored, largest_gain = -kInf;
   int gainer = -1;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     double e = energyOf(world.bodies[i], int(i));
@@ -151,8 +151,8 @@ std::optional<Fault> FaultCheck::unexplainedMotion(const World& world) {
   return f;
 }
 
-std::optional<Fault> FaultCheck::energyGain(const World& world) {
-  std::optional<EnergyGain> g = energy_.afterStep(world);
+std::optional<Fault> FaultCheck::energyGain(const World& world, double stored) {
+  std::optional<EnergyGain> g = energy_.afterStep(world, stored);
   if (!g) return std::nullopt;
   Fault f;
   f.kind = Fault::Kind::EnergyGain;
@@ -184,8 +184,9 @@ std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& p
   // Every check runs every step (each keeps its running state); the first fault found is reported.
   std::optional<Fault> f = nonFinite(world);
   if (f) return record(*f, world, step, stages);
-  std::optional<Fault> checks[] = {unexplainedMotion(world), runawayEnergy(world),
-                                   deepPenetration(world, pipeline.contacts()), energyGain(world)};
+  const double stored = pipeline.storedEnergy();
+  std::optional<Fault> checks[] = {unexplainedMotion(world), runawayEnergy(world, stored),
+                                   deepPenetration(world, pipeline.contacts()), energyGain(world, stored)};
   for (std::optional<Fault>& c : checks)
     if (c) return record(*c, world, step, stages);
   return std::nullopt;

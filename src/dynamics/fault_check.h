@@ -73,10 +73,10 @@ class FaultCheck {
 
  private:
   std::optional<Fault> nonFinite(const World& world) const;
-  std::optional<Fault> runawayEnergy(const World& world) const;
+  std::optional<Fault> runawayEnergy(const World& world, double stored) const;
   std::optional<Fault> deepPenetration(const World& world, const std::vector<Contact>& contacts) const;
   std::optional<Fault> unexplainedMotion(const World& world);
-  std::optional<Fault> energyGain(const World& world);
+  std::optional<Fault> energyGain(const World& world, double stored);
   double energyOf(const RigidBody& body, int index) const;
   std::string stagesRun(const std::vector<StageTime>& profile);
   std::optional<Fault> record(Fault fault, const World& world, long step, const std::string& stages);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "dynamics/baraff/baraff_model.h"
+#include "dynamics/penalty/penalty_model.h"
 #include "dynamics/time_stepping/time_stepping_model.h"
 
 namespace tumble {
@@ -11,6 +12,7 @@ std::unique_ptr<ContactModelStep> makeContactModel(ContactModel model) {
   switch (model) {
     case ContactModel::Baraff: return std::make_unique<BaraffModel>();
     case ContactModel::TimeStepping: return std::make_unique<TimeSteppingModel>();
+    case ContactModel::Penalty: return std::make_unique<PenaltyModel>();
   }
   return nullptr;
 }

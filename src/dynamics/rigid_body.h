@@ -27,6 +27,8 @@ struct RigidBody {
   std::vector<ConvexPiece> pieces;                                 // body frame: origin at COM,
                                                                    // axes principal (empty for planes)
   double restitution = 0.5, friction = 0.5;
+  // Elastic constants, read only by the penalty model's stiffness from materials.
+  double youngs_modulus_pa = 1e8, poisson_ratio = 0.3;
   Eigen::Vector3d colour_srgb{0.8, 0.8, 0.8};
 
   // state

@@ -12,7 +12,32 @@ enum class Integrator { SemiImplicitEuler, Rk4 };
 //   Baraff        event-driven: back-step to each first contact, Newton impulses, resting-force LCP
 //   TimeStepping  Moreau / Stewart-Trinkle: one velocity-level impulse problem per step, solved by
 //                 warm-started Gauss-Seidel; no back-stepping (fast, first order in dt)
-enum class ContactModel { Baraff, TimeStepping };
+//   Penalty       regularised: bodies overlap a little and a force law of the overlap and its rate
+//                 pushes them apart; sub-steps as short as the stiffest contact needs
+enum class ContactModel { Baraff, TimeStepping, Penalty };
+
+// The regularised family's normal force laws (penalty/force_laws.h) and friction laws
+// (penalty/friction_laws.h), as P. Flores, "Contact mechanics for dynamical systems: a comprehensive
+// review", Multibody System Dynamics, 2022, presents them.
+enum class NormalForceLaw { Hooke, KelvinVoigt, Hertz, HuntCrossley, LankaraniNikravesh, Flores };
+enum class FrictionLaw { Coulomb, Threlfall, BengisuAkay, Ambrosio };
+
+struct PenaltySettings {
+  NormalForceLaw law = NormalForceLaw::HuntCrossley;
+  // N/m for the linear laws (hooke, kelvin_voigt), N/m^1.5 for the others; 0: from the bodies'
+  // materials (Young's modulus, Poisson's ratio) and the contact's radius (penalty/contact_stiffness.h).
+  double stiffness = 0;
+  FrictionLaw friction_law = FrictionLaw::Coulomb;
+  // m/s: Coulomb's ramp, Threlfall's threshold, Bengisu and Akay's peak, Ambrosio's upper speed v1.
+  // Every regularised law lets a body creep at speeds of this order where Coulomb's would stick.
+  double ramp_speed_m_s = 1e-3;
+  double ambrosio_dead_speed_m_s = 1e-4;   // m/s: Ambrosio's v0, below which friction is off
+  double static_friction_ratio = 1.2;      // Bengisu and Akay: mu_s / mu_d (the body's friction is mu_d)
+  double stribeck_decay_s_m = 10;          // Bengisu and Akay's kappa, s/m: how fast mu falls to mu_d
+  // Sub-steps per step at most. A contact that needs more (too stiff for its mass at this dt)
+  // stops the run with the pair, its stiffness and the step it needs, never a silent blow-up.
+  int max_substeps = 20000;
+};
 
 struct ContactSettings {
   double margin_m = 1e-3;           // m: pairs closer than this are reported by the narrow phase,
@@ -46,8 +71,9 @@ struct StepSettings {
   double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
   Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
   ContactSettings contact;                        // detection margin, tolerances, thresholds
-  ContactModel model = ContactModel::Baraff;      // event-driven, or velocity-level time stepping
+  ContactModel model = ContactModel::Baraff;      // event-driven, velocity-level time stepping, or penalty
   int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
+  PenaltySettings penalty;                        // force and friction laws (Penalty)
   SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)
 };
 

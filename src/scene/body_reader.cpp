@@ -188,6 +188,8 @@ BodySpec readBody(ObjectReader& in, int index, const std::filesystem::path& scen
   readMotionAndMass(in, body);
   body.restitution = in.number("restitution", body.restitution, {0, 1});
   body.friction = in.number("friction", body.friction, {0, 100});
+  body.youngs_modulus_pa = in.number("youngs_modulus_pa", body.youngs_modulus_pa, {0, 1e13, true, false});
+  body.poisson_ratio = in.number("poisson_ratio", body.poisson_ratio, {-1, 0.5, true, true});
   if (in.has("color") && in.has("colour")) in.fail("colour", "give \"color\" or \"colour\", not both");
   // The ground defaults to a neutral grey; bodies to a warm orange that reads against it.
   Eigen::Vector3d fallback = body.shape == ShapeKind::Plane ? Eigen::Vector3d(0.62, 0.62, 0.62) : body.colour_srgb;

@@ -53,6 +53,8 @@ struct BodySpec {
   std::optional<double> mass_kg;
   double restitution = 0.5;                            // Newton's coefficient, [0, 1]
   double friction = 0.5;                               // Coulomb coefficient, >= 0
+  double youngs_modulus_pa = 1e8;                      // Pa, > 0 (the penalty model's stiffness)
+  double poisson_ratio = 0.3;                          // (-1, 0.5)
   Eigen::Vector3d colour_srgb{0.8, 0.45, 0.2};         // 0..1, as a colour picker shows it
 };
 

@@ -55,6 +55,42 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   in.rejectUnknownKeys();
 }
 
+// The penalty model's laws and their parameters (dynamics/penalty/). A stiffness is given in the
+// unit of its law (N/m for the linear laws, N/m^1.5 for the Hertz-type ones), so a number meant
+// for the other family is refused rather than read a thousand times off.
+void readPenalty(ObjectReader& in, PenaltySettings& p) {
+  const std::string law = readChoice(in, "law", "hunt_crossley",
+                                     {"hooke", "kelvin_voigt", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores"});
+  p.law = law == "hooke"               ? NormalForceLaw::Hooke
+          : law == "kelvin_voigt"      ? NormalForceLaw::KelvinVoigt
+          : law == "hertz"             ? NormalForceLaw::Hertz
+          : law == "hunt_crossley"     ? NormalForceLaw::HuntCrossley
+          : law == "lankarani_nikravesh" ? NormalForceLaw::LankaraniNikravesh
+                                       : NormalForceLaw::Flores;
+  const bool linear = p.law == NormalForceLaw::Hooke || p.law == NormalForceLaw::KelvinVoigt;
+  const char* right = linear ? "stiffness_n_m" : "stiffness_n_m1_5";
+  const char* wrong = linear ? "stiffness_n_m1_5" : "stiffness_n_m";
+  if (in.has(wrong))
+    in.fail(wrong, "the " + law + " law's stiffness is \"" + right + "\" (" +
+                       (linear ? "N/m: force = k overlap" : "N/m^1.5: force = K overlap^1.5") + ")");
+  p.stiffness = in.number(right, 0, {0, 1e15, true, false});
+  const std::string friction = readChoice(in, "friction_law", "coulomb", {"coulomb", "threlfall", "bengisu_akay", "ambrosio"});
+  p.friction_law = friction == "coulomb"     ? FrictionLaw::Coulomb
+                   : friction == "threlfall" ? FrictionLaw::Threlfall
+                   : friction == "bengisu_akay" ? FrictionLaw::BengisuAkay
+                                              : FrictionLaw::Ambrosio;
+  p.ramp_speed_m_s = in.number("ramp_speed_m_s", p.ramp_speed_m_s, {0, 100, true, false});
+  p.ambrosio_dead_speed_m_s = in.number("dead_speed_m_s", p.ambrosio_dead_speed_m_s, {0, 100, false, false});
+  if (p.friction_law == FrictionLaw::Ambrosio && p.ambrosio_dead_speed_m_s >= p.ramp_speed_m_s)
+    in.fail(in.has("dead_speed_m_s") ? "dead_speed_m_s" : "ramp_speed_m_s",
+            "Ambrosio's friction rises from \"dead_speed_m_s\" (" + formatNumber(p.ambrosio_dead_speed_m_s) +
+                ") to \"ramp_speed_m_s\" (" + formatNumber(p.ramp_speed_m_s) + "): the first must be smaller");
+  p.static_friction_ratio = in.number("static_friction_ratio", p.static_friction_ratio, {1, 100});
+  p.stribeck_decay_s_m = in.number("stribeck_decay_s_m", p.stribeck_decay_s_m, {0, 1e6, true, false});
+  p.max_substeps = in.integer("max_substeps", p.max_substeps, 1, 10000000);
+  in.rejectUnknownKeys();
+}
+
 void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) {
   StepSettings& step = sim.step;
   step.integrator = readIntegrator(in, "integrator", step.integrator);
@@ -63,9 +99,16 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
       readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
   step.contact.max_direct_rows = in.integer("pivoting_max_rows", step.contact.max_direct_rows, 0, 100000);
   step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
-  step.model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"}) == "baraff"
-                   ? ContactModel::Baraff
-                   : ContactModel::TimeStepping;
+  const std::string model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping", "penalty"});
+  step.model = model == "baraff" ? ContactModel::Baraff
+               : model == "penalty" ? ContactModel::Penalty
+                                    : ContactModel::TimeStepping;
+  if (auto penalty = in.optionalObject("penalty")) {
+    if (step.model != ContactModel::Penalty)
+      in.fail("penalty", "\"penalty\" settings go with \"contact_model\": \"penalty\" (this scene's model is \"" +
+                             model + "\")");
+    readPenalty(*penalty, step.penalty);
+  }
   step.time_stepping_sweeps = in.integer("time_stepping_sweeps", step.time_stepping_sweeps, 1, 100000);
   step.sleep.enabled = in.boolean("sleep", step.sleep.enabled);
   step.sleep.speed_m_s = in.number("sleep_speed_m_s", step.sleep.speed_m_s, {0, 10, true, false});

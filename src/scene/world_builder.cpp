@@ -95,6 +95,8 @@ RigidBody buildBody(const Scene& scene, const BodySpec& spec, std::vector<std::s
   body.is_static = spec.is_static;
   body.restitution = spec.restitution;
   body.friction = spec.friction;
+  body.youngs_modulus_pa = spec.youngs_modulus_pa;
+  body.poisson_ratio = spec.poisson_ratio;
   body.colour_srgb = spec.colour_srgb;
   std::vector<ConvexPiece> pieces = piecesOf(scene, spec, warnings);
   if (spec.shape == ShapeKind::Plane) {

@@ -6,15 +6,6 @@
 
 namespace tumble {
 
-void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach) {
-  reach.assign(world.bodies.size(), 0.0);
-  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-    const RigidBody& b = world.bodies[i];
-    if (b.is_static) continue;
-    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
-  }
-}
-
 void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
   ++shared.counters.substeps;
   const double dt = settings.dt;

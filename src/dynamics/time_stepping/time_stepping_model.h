@@ -29,9 +29,4 @@ class TimeSteppingModel final : public ContactModelStep {
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
 };
 
-// How far each body's points can travel within a step (m; 0 for static bodies): the speculative
-// margin the detector adds for it, so that every pair that can touch during the step is a contact
-// at its start. (|v| + |g| dt + |w| r) dt, with r the body's radius about its centre of mass.
-void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach);
-
 }  // namespace tumble
