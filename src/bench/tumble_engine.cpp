@@ -34,6 +34,15 @@ StepSettings timeStepping(int sweeps, int pivoting_max_rows, bool sleep = false)
   return s;
 }
 
+// The penalty model with one normal force law, the stiffness from the materials' defaults (a
+// polyhedron's corner as a sphere of half its width, E = 1e8 Pa) and Coulomb's law with a ramp.
+StepSettings penalty(NormalForceLaw law) {
+  StepSettings s;
+  s.model = ContactModel::Penalty;
+  s.penalty.law = law;
+  return s;
+}
+
 BodySpec boxSpec(const BoxBody& b, const BenchScene& scene, bool is_static, int index) {
   BodySpec spec;
   spec.name = (is_static ? "wall_" : "box_") + std::to_string(index);
@@ -127,7 +136,7 @@ EngineSetting setting(const std::string& name, const StepSettings& opt, bool on_
   // default setting runs there unless asked for by name.
   if (!on_piles)
     s.skip_reason = [](const BenchScene& scene) {
-      return scene.kind == SceneKind::Pile ? std::string("piles run the default setting only") : "";
+      return scene.kind == SceneKind::Pile ? std::string("piles run the chosen settings only") : "";
     };
   return s;
 }
@@ -150,6 +159,14 @@ std::vector<EngineSetting> tumbleSettings() {
       setting("tumble-ts-gs", timeStepping(30, 0), true),
       setting("tumble-ts-gs10", timeStepping(10, 0), true),
       setting("tumble-ts-gs10-sleep", timeStepping(10, 0, true), true),
+      // The penalty model, one setting per normal force law (docs/penalty.md). Not on the piles:
+      // its sub-steps follow the stiffest contact, a landing pile's are many.
+      setting("tumble-penalty-hooke", penalty(NormalForceLaw::Hooke), false),
+      setting("tumble-penalty-kv", penalty(NormalForceLaw::KelvinVoigt), false),
+      setting("tumble-penalty-hertz", penalty(NormalForceLaw::Hertz), false),
+      setting("tumble-penalty-hc", penalty(NormalForceLaw::HuntCrossley), false),
+      setting("tumble-penalty-ln", penalty(NormalForceLaw::LankaraniNikravesh), false),
+      setting("tumble-penalty-flores", penalty(NormalForceLaw::Flores), false),
   };
 }
 

@@ -286,7 +286,15 @@ void PenaltyModel::refuse(const World& world, const StepSettings& settings, doub
                 world.bodies[s.a].name.c_str(), world.bodies[s.b].name.c_str(), lawName(settings.penalty.law),
                 s.law.stiffness, s.law.exponent == 1 ? "N/m" : "N/m^1.5", 1 / s.inverse_mass, needed,
                 settings.penalty.max_substeps, settings.dt, needed);
-  throw Error(ExitCode::Software, text);
+  std::string message = text;
+  // Flores et al.'s factor 8(1 - e)/(5e) and Kelvin-Voigt's damping ratio grow without bound as e
+  // goes to 0: a nearly plastic pair is an extreme damper, whatever its stiffness.
+  const double e = combineRestitution(world.bodies[s.a].restitution, world.bodies[s.b].restitution);
+  if ((settings.penalty.law == NormalForceLaw::Flores || settings.penalty.law == NormalForceLaw::KelvinVoigt) && e < 0.1)
+    message += "; the pair's restitution " + std::to_string(e).substr(0, 4) + " makes the " +
+               lawName(settings.penalty.law) + " law's damping extreme (it cannot reach e = 0): raise the "
+               "restitution or use hunt_crossley";
+  throw Error(ExitCode::Software, message);
 }
 
 void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
