@@ -63,9 +63,17 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
       readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
   step.contact.max_direct_rows = in.integer("pivoting_max_rows", step.contact.max_direct_rows, 0, 100000);
   step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
-  step.model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"}) == "baraff"
-                   ? ContactModel::Baraff
-                   : ContactModel::TimeStepping;
+  const std::string model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"});
+  step.model = model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
+  // Only the event-driven model follows an impact through compression and restitution; the others
+  // solve one velocity-level impulse per step, which is Newton's law.
+  const std::string law = readChoice(in, "restitution_law", "newton", {"newton", "poisson", "stronge"});
+  if (law != "newton" && step.model != ContactModel::Baraff)
+    in.fail("restitution_law", "the \"" + model + "\" contact model has no \"" + law +
+                                   "\" restitution law, only \"newton\"; use \"contact_model\": \"baraff\"");
+  step.contact.restitution_law = law == "poisson"   ? RestitutionLaw::Poisson
+                                 : law == "stronge" ? RestitutionLaw::Stronge
+                                                    : RestitutionLaw::Newton;
   step.time_stepping_sweeps = in.integer("time_stepping_sweeps", step.time_stepping_sweeps, 1, 100000);
   step.sleep.enabled = in.boolean("sleep", step.sleep.enabled);
   step.sleep.speed_m_s = in.number("sleep_speed_m_s", step.sleep.speed_m_s, {0, 10, true, false});
