@@ -1,6 +1,7 @@
 #include "dynamics/baraff/point_impact.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -14,9 +15,14 @@ constexpr int kMaxPieces = 100000;
 // The slip keeps its direction when the part of its rate of change across it is below this share
 // of the rate: rounding in a planar impact (whose cross term is exactly 0 up to that) and less.
 constexpr double kKeepsDirection = 1e-10;
-// A turning slip is followed in pieces of at most this share of the frictionless compression
-// impulse |u_n| / K_nn (midpoint slip direction: error ~ piece^2).
-constexpr double kTurningPiece = 1.0 / 512;
+// A turning slip is followed in pieces over which its direction turns by about this angle (rad),
+// each taking the direction of its middle. Against pieces thirty times finer, over 4000 random
+// 3-D impacts, the impulse differed by 1.4e-5 of itself on average and 1.7e-3 at worst (where the
+// slip nearly stops); a few hundred pieces on average.
+constexpr double kTurn = 0.003;
+// ... and at most this share of the way to where the slip would stop at its present rate: the
+// turning rate grows as the slip shrinks, so a piece may not cross much of the way down.
+constexpr double kApproach = 0.5;
 // A turning slip slower than this share of the initial relative speed has stopped.
 constexpr double kStopped = 1e-10;
 
@@ -65,7 +71,6 @@ PointImpact followPointImpact(const Eigen::Matrix3d& K, const Eigen::Vector3d& u
   const bool sticks = hold.norm() <= mu;
   const Eigen::Vector2d slide_on = mu > 0 && !sticks ? slideOnDirection(Ktt, Ktn, mu) : Eigen::Vector2d::Zero();
   const double stopped = kStopped * u0.norm();
-  const double turning_piece = kTurningPiece * -u0[0] / K(0, 0);
 
   Eigen::Vector3d u = u0, p = Eigen::Vector3d::Zero();
   double work = 0;
@@ -73,39 +78,55 @@ PointImpact followPointImpact(const Eigen::Matrix3d& K, const Eigen::Vector3d& u
   double p_end = kInf, work_end = kInf;   // where restitution ends (Poisson, Stronge)
   for (int piece = 1; piece <= kMaxPieces; ++piece) {
     // g: the tangential impulse per unit normal impulse over this piece.
-    Eigen::Vector2d g = Eigen::Vector2d::Zero();
-    double step = kInf;
+    Eigen::Vector2d g = Eigen::Vector2d::Zero(), rate = Eigen::Vector2d::Zero();
+    double planned = kInf;
     bool turning = false;
     const Eigen::Vector2d s = u.tail<2>();
+    slipping = slipping && s.norm() > stopped;
     if (mu > 0 && !slipping) {
       g = sticks ? hold : Eigen::Vector2d(-mu * slide_on);
     } else if (slipping) {
       g = -mu * s.normalized();
-      const Eigen::Vector2d rate = Ktn + Ktt * g;
-      turning = std::abs(cross(s.normalized(), rate)) > kKeepsDirection * rate.norm();
+      rate = Ktn + Ktt * g;
+      const double across = std::abs(cross(s.normalized(), rate));   // |s| times its turning rate
+      turning = across > kKeepsDirection * rate.norm();
+      if (turning) planned = s.norm() * std::min(kTurn / across, kApproach / rate.norm());
+    }
+    Eigen::Vector3d D;   // du / dp_n over the piece
+    double step = kInf;
+    Event event = Event::PieceEnds;
+    for (int pass = 0; pass < 2; ++pass) {
       if (turning) {
         // The slip turns: a short piece, with the direction the slip has in its middle.
-        step = std::min(turning_piece, s.norm() / rate.norm());
-        const Eigen::Vector2d middle = s + 0.5 * step * rate;
+        const Eigen::Vector2d middle = s + 0.5 * planned * rate;
         if (middle.norm() > 0) g = -mu * middle.normalized();
       }
-    }
-    const Eigen::Vector3d D = K * Eigen::Vector3d(1, g.x(), g.y());   // du / dp_n over the piece
-    Event event = Event::PieceEnds;
-    auto sooner = [&](double t, Event e) {
-      if (t >= 0 && t < step) step = t, event = e;
-    };
-    if (slipping) {
-      // Where |s + D_t t| is least: 0 when the slip keeps its direction and stops.
-      const Eigen::Vector2d rate = D.tail<2>();
-      if (rate.squaredNorm() > 0 && s.dot(rate) < 0) sooner(-s.dot(rate) / rate.squaredNorm(), Event::SlipStops);
-    }
-    if (!restitution) {
-      if (D[0] > 0) sooner(-u[0] / D[0], Event::CompressionEnds);
-    } else {
-      sooner(law == RestitutionLaw::Poisson ? p_end - p[0] : workReached(work_end - work, u[0], D[0]),
-             Event::ImpactEnds);
-      if (D[0] < 0) sooner(-u[0] / D[0], Event::ImpactEnds);   // back to rest along the normal
+      D = K * Eigen::Vector3d(1, g.x(), g.y());
+      step = planned;
+      event = Event::PieceEnds;
+      // The first pass takes an event before the planned end, the second one at it too (an event
+      // that cut the piece to nothing, as at the very end of the impact, must still be taken).
+      auto sooner = [&](double t, Event e) {
+        if (t >= 0 && (t < step || (pass == 1 && t == step))) step = t, event = e;
+      };
+      if (slipping && !turning) {
+        // A slip that keeps its direction stops where s + D_t t = 0. (A turning one is followed
+        // down in pieces that at most halve it: a turning slip may also pass the origin at a
+        // distance, its least point no stop.)
+        const Eigen::Vector2d d = D.tail<2>();
+        if (d.squaredNorm() > 0 && s.dot(d) < 0) sooner(-s.dot(d) / d.squaredNorm(), Event::SlipStops);
+      }
+      if (!restitution) {
+        if (D[0] > 0) sooner(-u[0] / D[0], Event::CompressionEnds);
+      } else {
+        sooner(law == RestitutionLaw::Poisson ? std::max(p_end - p[0], 0.0) : workReached(work_end - work, u[0], D[0]),
+               Event::ImpactEnds);
+        if (D[0] < 0) sooner(-u[0] / D[0], Event::ImpactEnds);   // back to rest along the normal
+      }
+      // An event cuts a turning piece short: the shorter piece, with the direction of its own
+      // middle (the event may then fall just past it: the next piece takes it).
+      if (!turning || event == Event::PieceEnds) break;
+      planned = step;
     }
     if (!std::isfinite(step)) return out;   // compression never ends
     work += step * (u[0] + 0.5 * D[0] * step);
@@ -115,9 +136,7 @@ PointImpact followPointImpact(const Eigen::Matrix3d& K, const Eigen::Vector3d& u
       case Event::PieceEnds:
         break;
       case Event::SlipStops:
-        // Kept direction: stopped (to rounding). Turning: the least slip of the piece, which
-        // shrinks fast as the slip settles on a direction it keeps.
-        slipping = turning && u.tail<2>().norm() > stopped;
+        slipping = false;
         break;
       case Event::CompressionEnds:
         u[0] = 0;
