@@ -119,7 +119,8 @@ PointImpact followPointImpact(const Eigen::Matrix3d& K, const Eigen::Vector3d& u
       if (!restitution) {
         if (D[0] > 0) sooner(-u[0] / D[0], Event::CompressionEnds);
       } else {
-        sooner(law == RestitutionLaw::Poisson ? std::max(p_end - p[0], 0.0) : workReached(work_end - work, u[0], D[0]),
+        sooner(law == RestitutionLaw::Poisson ? std::max(p_end - p[0], 0.0)
+                                              : workReached(work_end - work, u[0], D[0]),
                Event::ImpactEnds);
         if (D[0] < 0) sooner(-u[0] / D[0], Event::ImpactEnds);   // back to rest along the normal
       }

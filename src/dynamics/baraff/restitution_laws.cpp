@@ -26,11 +26,13 @@ bool pointImpact(World& world, const Contact& c, const std::vector<const Contact
                  RestitutionLaw law, double restitution_scale) {
   const std::vector<ContactRow> rows = frameRows(world, c);
   const Eigen::Matrix3d K = delassus(world, rows);
-  const Eigen::Vector3d u(rowVelocity(world, rows[0]), rowVelocity(world, rows[1]), rowVelocity(world, rows[2]));
+  const Eigen::Vector3d u(rowVelocity(world, rows[0]), rowVelocity(world, rows[1]),
+                          rowVelocity(world, rows[2]));
   // Compression is the same for every e: if it ends for one, it ends for all.
-  if (!followPointImpact(K, u, c.friction, restitution_scale * e, law).ended) return false;
+  const PointImpact full = followPointImpact(K, u, c.friction, restitution_scale * e, law);
+  if (!full.ended) return false;
   auto apply = [&](double scale) {
-    PointImpact impact = followPointImpact(K, u, c.friction, scale * e, law);
+    PointImpact impact = scale == restitution_scale ? full : followPointImpact(K, u, c.friction, scale * e, law);
     if (!impact.ended) impact = followPointImpact(K, u, c.friction, 0, law);
     applyAlongRows(world, rows, impact.p);
   };
