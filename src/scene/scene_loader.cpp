@@ -65,12 +65,13 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
   step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
   const std::string model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping"});
   step.model = model == "baraff" ? ContactModel::Baraff : ContactModel::TimeStepping;
-  // Only the event-driven model follows an impact through compression and restitution; the others
-  // solve one velocity-level impulse per step, which is Newton's law.
+  // Only the event-driven model follows an impact through compression and restitution and so has
+  // a choice of law (time stepping's one impulse per step is Newton's law): the key is refused
+  // with any other model, whatever law it names.
   const std::string law = readChoice(in, "restitution_law", "newton", {"newton", "poisson", "stronge"});
-  if (law != "newton" && step.model != ContactModel::Baraff)
-    in.fail("restitution_law", "the \"" + model + "\" contact model has no \"" + law +
-                                   "\" restitution law, only \"newton\"; use \"contact_model\": \"baraff\"");
+  if (in.has("restitution_law") && step.model != ContactModel::Baraff)
+    in.fail("restitution_law", "the \"" + model + "\" contact model has no choice of restitution law (\"" + law +
+                                   "\" is one of the \"baraff\" model's)");
   step.contact.restitution_law = law == "poisson"   ? RestitutionLaw::Poisson
                                  : law == "stronge" ? RestitutionLaw::Stronge
                                                     : RestitutionLaw::Newton;

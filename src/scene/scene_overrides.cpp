@@ -40,9 +40,8 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
 void setContactModel(Scene& scene, ContactModel model, const std::string& flag) {
   const RestitutionLaw law = scene.simulation.step.contact.restitution_law;
   if (model != ContactModel::Baraff && law != RestitutionLaw::Newton)
-    usage(flag + ": the time_stepping contact model has no " +
-          (law == RestitutionLaw::Poisson ? "\"poisson\"" : "\"stronge\"") +
-          " restitution law, which the scene asks for (simulation.restitution_law); only \"newton\"");
+    usage(flag + ": only the baraff contact model has a choice of restitution law, and the scene asks for " +
+          (law == RestitutionLaw::Poisson ? "\"poisson\"" : "\"stronge\"") + " (simulation.restitution_law)");
   scene.simulation.step.model = model;
 }
 

@@ -42,7 +42,7 @@ TEST_CASE("a --contact-model without the scene's restitution law is a usage erro
     FAIL("no error");
   } catch (const Error& e) {
     CHECK(e.code() == ExitCode::Usage);
-    CHECK_THAT(e.what(), Catch::StartsWith("--contact-model: the time_stepping contact model has no \"poisson\""));
+    CHECK_THAT(e.what(), Catch::StartsWith("--contact-model: only the baraff contact model has a choice of restitution law, and the scene asks for \"poisson\""));
   }
   CHECK(s.simulation.step.model == ContactModel::Baraff);
   setContactModel(s, ContactModel::Baraff, "--contact-model");
