@@ -44,9 +44,11 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
   if (!o.integrator.empty())
     scene.simulation.step.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
   if (!o.contact_model.empty())
-    scene.simulation.step.model = o.contact_model == "baraff"    ? ContactModel::Baraff
-                                  : o.contact_model == "penalty" ? ContactModel::Penalty
-                                                                 : ContactModel::TimeStepping;
+    setContactModel(scene,
+                    o.contact_model == "baraff"    ? ContactModel::Baraff
+                    : o.contact_model == "penalty" ? ContactModel::Penalty
+                                                   : ContactModel::TimeStepping,
+                    "--contact-model");
   if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
   return scene;
 }

@@ -39,6 +39,13 @@ struct PenaltySettings {
   int max_substeps = 20000;
 };
 
+// What the coefficient of restitution e of a Baraff impact means (baraff/restitution_laws.h):
+//   Newton   kinematic: the normal velocity after is -e times the one before
+//   Poisson  kinetic: the normal impulse of restitution is e times that of compression
+//   Stronge  energetic: restitution gives back e^2 of the work compression absorbed
+// The three agree without friction, or where the slip keeps its direction through the impact.
+enum class RestitutionLaw { Newton, Poisson, Stronge };
+
 struct ContactSettings {
   double margin_m = 1e-3;           // m: pairs closer than this are reported by the narrow phase,
                                     // so contacts exist before they touch (cheap, coherent)
@@ -53,6 +60,7 @@ struct ContactSettings {
   // (cost ~ rows^3); larger ones (a pile) by Gauss-Seidel sweeps (cost ~ rows per sweep). 256
   // keeps a stack of 20 boxes (80 contacts, 240 rows) exact.
   int max_direct_rows = 256;
+  RestitutionLaw restitution_law = RestitutionLaw::Newton;   // Baraff impacts: what e means
 };
 
 struct SleepSettings {

@@ -109,6 +109,16 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
                              model + "\")");
     readPenalty(*penalty, step.penalty);
   }
+  // Only the event-driven model follows an impact through compression and restitution and so has
+  // a choice of law (time stepping's one impulse per step is Newton's law): the key is refused
+  // with any other model, whatever law it names.
+  const std::string law = readChoice(in, "restitution_law", "newton", {"newton", "poisson", "stronge"});
+  if (in.has("restitution_law") && step.model != ContactModel::Baraff)
+    in.fail("restitution_law", "the \"" + model + "\" contact model has no choice of restitution law (\"" + law +
+                                   "\" is one of the \"baraff\" model's)");
+  step.contact.restitution_law = law == "poisson"   ? RestitutionLaw::Poisson
+                                 : law == "stronge" ? RestitutionLaw::Stronge
+                                                    : RestitutionLaw::Newton;
   step.time_stepping_sweeps = in.integer("time_stepping_sweeps", step.time_stepping_sweeps, 1, 100000);
   step.sleep.enabled = in.boolean("sleep", step.sleep.enabled);
   step.sleep.speed_m_s = in.number("sleep_speed_m_s", step.sleep.speed_m_s, {0, 10, true, false});

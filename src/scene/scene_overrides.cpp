@@ -37,6 +37,14 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
   checkTotalSteps(scene, flag);
 }
 
+void setContactModel(Scene& scene, ContactModel model, const std::string& flag) {
+  const RestitutionLaw law = scene.simulation.step.contact.restitution_law;
+  if (model != ContactModel::Baraff && law != RestitutionLaw::Newton)
+    usage(flag + ": only the baraff contact model has a choice of restitution law, and the scene asks for " +
+          (law == RestitutionLaw::Poisson ? "\"poisson\"" : "\"stronge\"") + " (simulation.restitution_law)");
+  scene.simulation.step.model = model;
+}
+
 void setFrameRate(Scene& scene, int fps) {
   if (fps < 1 || fps > 1000) usage("--fps: " + std::to_string(fps) + " is outside [1, 1000]");
   double duration = scene.render.frames / double(scene.render.fps);

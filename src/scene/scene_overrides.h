@@ -16,6 +16,9 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag);
 void setFrameRate(Scene& scene, int fps);
 void setDuration(Scene& scene, double duration_s);
 void setFrameCount(Scene& scene, int frames);
+// Another contact model. Throws Error(Usage) when the scene asks for Poisson's or Stronge's
+// restitution law and the model is not "baraff" (the only one with a choice), as the loader does.
+void setContactModel(Scene& scene, ContactModel model, const std::string& flag);
 // "1280x720" -> width and height. Throws Error(Usage) on anything else.
 void setSize(Scene& scene, const std::string& size);
 

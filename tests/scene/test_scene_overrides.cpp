@@ -33,3 +33,20 @@ TEST_CASE("the --size override takes WIDTHxHEIGHT within limits", "[scene]") {
   CHECK_THROWS_AS(setSize(s, "640*360"), Error);
   CHECK_THROWS_AS(setSize(s, "100000x100000"), Error);
 }
+
+TEST_CASE("a --contact-model without the scene's restitution law is a usage error", "[scene]") {
+  Scene s = parseScene(R"({"schema_version": 1, "simulation": {"restitution_law": "poisson"},
+    "bodies": [{"shape": "box"}]})", "t.json");
+  try {
+    setContactModel(s, ContactModel::TimeStepping, "--contact-model");
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::Usage);
+    CHECK_THAT(e.what(), Catch::StartsWith("--contact-model: only the baraff contact model has a choice of restitution law, and the scene asks for \"poisson\""));
+  }
+  CHECK(s.simulation.step.model == ContactModel::Baraff);
+  setContactModel(s, ContactModel::Baraff, "--contact-model");
+  Scene newton = parseScene(R"({"schema_version": 1, "bodies": [{"shape": "box"}]})", "t.json");
+  setContactModel(newton, ContactModel::TimeStepping, "--contact-model");
+  CHECK(newton.simulation.step.model == ContactModel::TimeStepping);
+}

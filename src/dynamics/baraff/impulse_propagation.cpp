@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "dynamics/baraff/impact_energy.h"
+#include "dynamics/baraff/restitution_laws.h"
 #include "dynamics/contact_jacobian.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/island_impulses.h"
@@ -11,34 +13,6 @@
 
 namespace tumble {
 namespace {
-
-// The momenta of the bodies an impact touches, to measure its energy and to undo it.
-struct Momenta {
-  std::vector<int> bodies;
-  std::vector<Eigen::Vector3d> P, L;
-
-  Momenta(const World& world, const std::vector<const Contact*>& points) {
-    for (const Contact* c : points)
-      for (int b : {c->a, c->b})
-        if (!world.bodies[b].is_static && std::find(bodies.begin(), bodies.end(), b) == bodies.end())
-          bodies.push_back(b);
-    for (int b : bodies) {
-      P.push_back(world.bodies[b].P);
-      L.push_back(world.bodies[b].L);
-    }
-  }
-  double energy(const World& world) const {
-    double e = 0;
-    for (int b : bodies) e += world.bodies[b].kineticEnergy();
-    return e;
-  }
-  void restore(World& world) const {
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-      world.bodies[bodies[i]].P = P[i];
-      world.bodies[bodies[i]].L = L[i];
-    }
-  }
-};
 
 // Newton's law on the points as an LCP in the impulses j:  w = A j + b  with b = (1 + e) v- on the
 // normal rows (so w = v+ + e v- >= 0) and b = v_t on the friction rows (w = v_t+ = 0 while the
@@ -54,38 +28,21 @@ void applyNewtonImpulses(World& world, const std::vector<const Contact*>& points
   applyAlongRows(world, lcp.rows, r.f);
 }
 
-// Relative slack on "no energy added": rounding in summing the energies of a few bodies.
-constexpr double kEnergySlack = 1e-12;
-
 // Newton's law with restitution on `points` (pre-impact normal velocities vn), never adding energy.
+// Kane's paradox: with friction, Newton's law on velocities can return more energy than the impact
+// took (the tangential impulse changes the normal velocity the restitution acts on). The inelastic
+// solve (e = 0) cannot: with w = v+ and j the impulses, the energy change is j.w - j^T A j / 2,
+// where j_n w_n = 0 by complementarity and j_t w_t <= 0 at a friction bound, so it is <= 0. Only
+// an inexact friction solve can miss that; without friction rows the inelastic impulse is a
+// projection (energy change -j^T A j / 2).
 void newtonImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
                   double min_bounce_speed, double restitution_scale, ContactSolveStats& stats) {
   std::vector<double> e;
   for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed ? points[i]->restitution : 0.0);
-  Momenta before(world, points);
-  const double energy = before.energy(world);
-  auto gains = [&] { return before.energy(world) > energy * (1 + kEnergySlack); };
-  applyNewtonImpulses(world, points, vn, e, restitution_scale, true, stats);
-  if (!gains()) return;
-  // Kane's paradox: with friction, Newton's law on velocities can return more energy than the
-  // impact took (the tangential impulse changes the normal velocity the restitution acts on).
-  // The inelastic solve (e = 0) cannot: with w = v+ and j the impulses, the energy change is
-  // j.w - j^T A j / 2, where j_n w_n = 0 by complementarity and j_t w_t <= 0 at a friction bound,
-  // so it is <= 0. Keep the largest restitution (bisection on its scale) that adds no energy.
-  double ok = 0, bad = restitution_scale;
-  for (int i = 0; i < 30 && bad - ok > 1e-6 * restitution_scale; ++i) {
-    double mid = 0.5 * (ok + bad);
-    before.restore(world);
-    applyNewtonImpulses(world, points, vn, e, mid, true, stats);
-    (gains() ? bad : ok) = mid;
-  }
-  before.restore(world);
-  applyNewtonImpulses(world, points, vn, e, ok, true, stats);
-  if (!gains()) return;
-  // Only an inexact friction solve gets here; without friction rows the inelastic impulse is a
-  // projection (energy change -j^T A j / 2).
-  before.restore(world);
-  applyNewtonImpulses(world, points, vn, e, 0, false, stats);
+  applyAddingNoEnergy(
+      world, points, restitution_scale,
+      [&](double scale) { applyNewtonImpulses(world, points, vn, e, scale, true, stats); },
+      [&] { applyNewtonImpulses(world, points, vn, e, 0, false, stats); });
 }
 
 // An impact whose lift-offs cannot last settles. Newton's law at a landing edge turns the body
@@ -131,7 +88,7 @@ LiftOff measureLiftOff(const World& world, const std::vector<const Contact*>& po
 // Bodies pressing on these from outside the impact, and spin's own accelerations, are left out:
 // the answer decides only whether a lift-off is long enough to keep.
 bool liftOffsShort(World& world, const std::vector<const Contact*>& points, const LiftOff& l, double within) {
-  Momenta before(world, points);
+  ImpactMomenta before(world, points);
   const std::vector<ContactRow>& held = l.holds;
   std::vector<double> held_was;
   for (const ContactRow& r : held) held_was.push_back(rowVelocity(world, r));
@@ -157,7 +114,7 @@ void settleShortLiftOffs(World& world, const std::vector<const Contact*>& points
                          const SettleRule& rule) {
   const LiftOff l = measureLiftOff(world, points, vn, rule.slack_m_s);
   if (l.lifted.empty() || !liftOffsShort(world, points, l, rule.within_s)) return;
-  Momenta before(world, points);
+  ImpactMomenta before(world, points);
   const double energy = before.energy(world);
   const std::vector<ContactRow>& rows = l.normals.rows;
   Eigen::VectorXd change(static_cast<Eigen::Index>(rows.size()));
@@ -189,10 +146,19 @@ void inelasticIslandImpact(World& world, const std::vector<const Contact*>& isla
 }  // namespace
 
 void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats, const SettleRule* settle) {
+                   double restitution_scale, RestitutionLaw law, ContactSolveStats& stats, const SettleRule* settle) {
   std::vector<double> vn;
   for (const Contact* c : points) vn.push_back(normalVelocity(world, *c));
-  newtonImpact(world, points, vn, min_bounce_speed, restitution_scale, stats);
+  // Poisson's and Stronge's laws live in restitution_laws.h; Newton's, and an impact those cannot
+  // follow to its end (a compression that never ends), is the LCP above.
+  switch (law) {
+    case RestitutionLaw::Poisson:
+    case RestitutionLaw::Stronge:
+      if (restitutionLawImpact(world, points, vn, law, min_bounce_speed, restitution_scale, stats)) break;
+      [[fallthrough]];
+    case RestitutionLaw::Newton:
+      newtonImpact(world, points, vn, min_bounce_speed, restitution_scale, stats);
+  }
   if (settle) settleShortLiftOffs(world, points, vn, *settle);
 }
 
@@ -248,14 +214,15 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
     for (int i = 1; i < n; ++i)
       if (pairs[i].approach < pairs[k].approach) k = i;
     if (pairs[k].approach >= -s.resting_speed_m_s) return;
-    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, stats, &settle);
+    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, s.restitution_law,
+                  stats, &settle);
     for (PairImpact& p : pairs)
       if (sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.
   if (tooLargeToPivot(island.size(), s.max_direct_rows)) inelasticIslandImpact(world, island, stats);
-  else resolveImpact(world, island, min_bounce_speed, 0.0, stats, &settle);
+  else resolveImpact(world, island, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
 }
 
 }  // namespace tumble

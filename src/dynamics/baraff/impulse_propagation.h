@@ -1,6 +1,6 @@
-// Colliding contacts (docs/architecture.md, collide): Newton's restitution impulses that
-// propagate through chains of contact, pair by pair, while the points of one body pair are always
-// solved together.
+// Colliding contacts (docs/architecture.md, collide): restitution impulses (Newton's law, or
+// Poisson's or Stronge's: restitution_laws.h) that propagate through chains of contact, pair by
+// pair, while the points of one body pair are always solved together.
 //
 // Why both. Newton's law can be imposed on all the contacts of an island at once (one LCP in the
 // impulses) or on one body pair at a time, in sequence. Each is right for one of two cases that
@@ -51,11 +51,13 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island,
 
 // One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every
 // normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
-// the impulses; e is scaled by `restitution_scale` in [0, 1]. Never adds kinetic energy (see the
-// .cpp: Newton's law with friction can, Kane's paradox).
+// the impulses; or with `law` Poisson's or Stronge's (restitution_laws.h). e is scaled by
+// `restitution_scale` in [0, 1]. Never adds kinetic energy (impact_energy.h: Newton's law with
+// friction can, Kane's paradox).
 // With a settle rule, an impact whose lift-offs gravity would end within the rule's time then
 // settles: no touching point leaves faster than it did before (see the .cpp).
 void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
-                   double restitution_scale, ContactSolveStats& stats, const SettleRule* settle = nullptr);
+                   double restitution_scale, RestitutionLaw law, ContactSolveStats& stats,
+                   const SettleRule* settle = nullptr);
 
 }  // namespace tumble
