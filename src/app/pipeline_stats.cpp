@@ -27,6 +27,7 @@ void printPipelineStats(const Pipeline& pipeline) {
                "%ld sweeps, %ld subspace steps, %ld solves left unconverged)\n",
                c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
                c.contacts.active_set_steps, c.contacts.unconverged_sweeps);
+  if (!c.model_choice.empty()) std::fprintf(stderr, "  contact model: %s\n", c.model_choice.c_str());
   const SleepCounters& s = pipeline.sleepCounters();
   std::fprintf(stderr, "  sleeping: %ld islands fell asleep, %ld woke; %d bodies asleep at the end\n",
                s.islands_slept, s.islands_woken, s.asleep_now);

@@ -16,9 +16,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.step.integrator)")
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
   command.add_option("--contact-model", o.contact_model,
-                     "baraff | time_stepping | penalty (overrides simulation.contact_model; penalty takes the "
+                     "auto | baraff | time_stepping | penalty (overrides simulation.contact_model; penalty takes the "
                      "scene's \"penalty\" settings or their defaults)")
-      ->check(CLI::IsMember({"baraff", "time_stepping", "penalty"}));
+      ->check(CLI::IsMember({"auto", "baraff", "time_stepping", "penalty"}));
   command.add_flag("--no-sleep", o.no_sleep,
                    "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.step.sleep.enabled)");
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
@@ -45,9 +45,10 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
     scene.simulation.step.integrator = o.integrator == "rk4" ? Integrator::Rk4 : Integrator::SemiImplicitEuler;
   if (!o.contact_model.empty())
     setContactModel(scene,
-                    o.contact_model == "baraff"    ? ContactModel::Baraff
-                    : o.contact_model == "penalty" ? ContactModel::Penalty
-                                                   : ContactModel::TimeStepping,
+                    o.contact_model == "baraff"          ? ContactModel::Baraff
+                    : o.contact_model == "penalty"       ? ContactModel::Penalty
+                    : o.contact_model == "time_stepping" ? ContactModel::TimeStepping
+                                                         : ContactModel::Auto,
                     "--contact-model");
   if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
   return scene;

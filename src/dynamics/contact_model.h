@@ -16,6 +16,8 @@ namespace tumble {
 class ContactModelStep {
  public:
   virtual ~ContactModelStep() = default;
+  // Called once by the Pipeline before the first step, with the world as the scene left it.
+  virtual void start(const World& /*world*/, const StepSettings& /*settings*/, SharedStages& /*shared*/) {}
   // Advances `world` by settings.dt, leaving the contacts of its end state in `shared.contacts`
   // (or `shared.contacts_fresh` false when they must be detected again).
   virtual void step(World& world, const StepSettings& settings, SharedStages& shared) = 0;
@@ -24,6 +26,8 @@ class ContactModelStep {
   // Energy the model holds outside the bodies' motion at the end of the step (J): a compliant
   // contact's spring. The energy check counts it, so an elastic bounce is not energy from nowhere.
   virtual double storedEnergy() const { return 0; }
+  // The model that actually runs the steps: the automatic one names its choice.
+  virtual ContactModel running(ContactModel asked) const { return asked; }
 };
 
 }  // namespace tumble

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "dynamics/auto/auto_model.h"
 #include "dynamics/baraff/baraff_model.h"
 #include "dynamics/penalty/penalty_model.h"
 #include "dynamics/time_stepping/time_stepping_model.h"
@@ -13,12 +14,15 @@ std::unique_ptr<ContactModelStep> makeContactModel(ContactModel model) {
     case ContactModel::Baraff: return std::make_unique<BaraffModel>();
     case ContactModel::TimeStepping: return std::make_unique<TimeSteppingModel>();
     case ContactModel::Penalty: return std::make_unique<PenaltyModel>();
+    case ContactModel::Auto: return std::make_unique<AutoModel>();
   }
   return nullptr;
 }
 
 Pipeline::Pipeline(const World& world, const StepSettings& settings)
-    : shared_(world), model_(makeContactModel(settings.model)) {}
+    : shared_(world), model_(makeContactModel(settings.model)) {
+  model_->start(world, settings, shared_);
+}
 
 void Pipeline::step(World& world, const StepSettings& settings) {
   model_->step(world, settings, shared_);

@@ -5,6 +5,7 @@
 //   baraff/          event-driven: sub-steps cut at first contacts, impulses, resting-force LCP
 //   time_stepping/   velocity-level impulses, one problem per step, never cut
 //   penalty/         regularised force laws of the overlap, in sub-steps the contacts' stiffness sets
+//   auto/            Baraff, or time stepping for a crowd of landings, chosen at the start
 //
 // After the model's step, the one stage both share: islands at rest fall asleep (sleeping.h).
 // "Model only what a scene needs": without gravity there is no force stage, without anything that
@@ -37,6 +38,8 @@ class Pipeline {
   // The contacts found at the end of the last step (for overlays and tests).
   const std::vector<Contact>& contacts() const { return shared_.contacts; }
   const SleepCounters& sleepCounters() const { return shared_.sleep.counters(); }
+  // The contact model that runs the steps (auto's choice, when the scene asked for auto).
+  ContactModel runningModel(const StepSettings& settings) const { return model_->running(settings.model); }
   // Energy held in compliant contacts (J; the penalty model's springs), for the energy checks.
   double storedEnergy() const { return model_->storedEnergy(); }
 

@@ -14,7 +14,8 @@ enum class Integrator { SemiImplicitEuler, Rk4 };
 //                 warm-started Gauss-Seidel; no back-stepping (fast, first order in dt)
 //   Penalty       regularised: bodies overlap a little and a force law of the overlap and its rate
 //                 pushes them apart; sub-steps as short as the stiffest contact needs
-enum class ContactModel { Baraff, TimeStepping, Penalty };
+//   Auto          Baraff, or time stepping for a scene that starts with a crowd of free bodies
+enum class ContactModel { Baraff, TimeStepping, Penalty, Auto };
 
 // The regularised family's normal force laws (penalty/force_laws.h) and friction laws
 // (penalty/friction_laws.h), as P. Flores, "Contact mechanics for dynamical systems: a comprehensive
@@ -79,7 +80,7 @@ struct StepSettings {
   double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
   Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
   ContactSettings contact;                        // detection margin, tolerances, thresholds
-  ContactModel model = ContactModel::Baraff;      // event-driven, velocity-level time stepping, or penalty
+  ContactModel model = ContactModel::Auto;        // auto (the default), event-driven, time stepping, penalty
   int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
   PenaltySettings penalty;                        // force and friction laws (Penalty)
   SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)

@@ -33,6 +33,7 @@ struct PipelineCounters {
   long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
   ContactSolveStats contacts;
   std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
+  std::string model_choice;           // what the automatic model chose and why (empty otherwise)
 };
 
 struct SharedStages {

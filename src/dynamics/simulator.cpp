@@ -9,7 +9,7 @@ BodySample sampleOf(const RigidBody& body) {
 }
 
 Simulator::Simulator(World world, const SimulationPlan& plan)
-    : world_(std::move(world)), plan_(plan), pipeline_(world_, plan.step), faults_(world_, FaultSettings::forModel(plan.step.model)) {}
+    : world_(std::move(world)), plan_(plan), pipeline_(world_, plan.step), faults_(world_, FaultSettings::forModel(pipeline_.runningModel(plan.step))) {}
 
 // A fault stops the run with Error(Software) the step it happens, unless the plan keeps going.
 void Simulator::checkFaults() {

@@ -99,10 +99,11 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
       readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
   step.contact.max_direct_rows = in.integer("pivoting_max_rows", step.contact.max_direct_rows, 0, 100000);
   step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
-  const std::string model = readChoice(in, "contact_model", "baraff", {"baraff", "time_stepping", "penalty"});
-  step.model = model == "baraff" ? ContactModel::Baraff
-               : model == "penalty" ? ContactModel::Penalty
-                                    : ContactModel::TimeStepping;
+  const std::string model = readChoice(in, "contact_model", "auto", {"auto", "baraff", "time_stepping", "penalty"});
+  step.model = model == "baraff"          ? ContactModel::Baraff
+               : model == "penalty"       ? ContactModel::Penalty
+               : model == "time_stepping" ? ContactModel::TimeStepping
+                                          : ContactModel::Auto;
   if (auto penalty = in.optionalObject("penalty")) {
     if (step.model != ContactModel::Penalty)
       in.fail("penalty", "\"penalty\" settings go with \"contact_model\": \"penalty\" (this scene's model is \"" +
@@ -113,7 +114,7 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
   // a choice of law (time stepping's one impulse per step is Newton's law): the key is refused
   // with any other model, whatever law it names.
   const std::string law = readChoice(in, "restitution_law", "newton", {"newton", "poisson", "stronge"});
-  if (in.has("restitution_law") && step.model != ContactModel::Baraff)
+  if (in.has("restitution_law") && step.model != ContactModel::Baraff && step.model != ContactModel::Auto)
     in.fail("restitution_law", "the \"" + model + "\" contact model has no choice of restitution law (\"" + law +
                                    "\" is one of the \"baraff\" model's)");
   step.contact.restitution_law = law == "poisson"   ? RestitutionLaw::Poisson

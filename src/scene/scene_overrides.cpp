@@ -39,7 +39,7 @@ void setTimeStep(Scene& scene, double dt_s, const std::string& flag) {
 
 void setContactModel(Scene& scene, ContactModel model, const std::string& flag) {
   const RestitutionLaw law = scene.simulation.step.contact.restitution_law;
-  if (model != ContactModel::Baraff && law != RestitutionLaw::Newton)
+  if (model != ContactModel::Baraff && model != ContactModel::Auto && law != RestitutionLaw::Newton)
     usage(flag + ": only the baraff contact model has a choice of restitution law, and the scene asks for " +
           (law == RestitutionLaw::Poisson ? "\"poisson\"" : "\"stronge\"") + " (simulation.restitution_law)");
   scene.simulation.step.model = model;

@@ -260,6 +260,7 @@ double PenaltyModel::stableSubstep(const World& world, double remaining, const E
       stiffest_ = static_cast<int>(i);
     }
   }
+  stable_ = h;
   // A point about to touch: end the sub-step where it touches (under gravity's pull too).
   double cut = h;
   for (const Spring& s : springs_) {
@@ -343,7 +344,8 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
       evaluate(world);
       h = stableSubstep(world, dt - done, world.gravity);
     });
-    if (h < smallest && dt - done > smallest) refuse(world, settings, h);
+    // Only the springs' stability can ask too much; a cut at a touching instant is short by choice.
+    if (stable_ < smallest && dt - done > smallest) refuse(world, settings, stable_);
     forces(h);
     kick(h / 2);
     drift.dt = h;

@@ -71,6 +71,7 @@ class PenaltyModel final : public ContactModelStep {
   std::vector<Wrench> idle_;                                        // no force: the drift
   std::vector<Wrench> start_wrenches_;                              // a sub-step's forces at its start
   int stiffest_ = -1;                                               // spring that set the last sub-step
+  double stable_ = 0;                                               // s: the last sub-step the springs allowed
   double stored_energy_ = 0;
 };
 

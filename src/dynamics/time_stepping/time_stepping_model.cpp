@@ -50,7 +50,10 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
   if (shared.apply_gravity) lines.push_back("forces      gravity impulse on " + shared.movingBodies());
   if (shared.has_contacts)
     lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
-                    "warm-started Gauss-Seidel; small islands it leaves unconverged pivoted exactly");
+                    "warm-started Gauss-Seidel, at most " + std::to_string(settings.time_stepping_sweeps) +
+                    " sweeps; " + (settings.contact.max_direct_rows > 0
+                                       ? "small islands it leaves unconverged pivoted exactly"
+                                       : "every island by Gauss-Seidel alone"));
   lines.push_back(shared.integrateLine(settings) + " (free motion with the new momenta)");
   if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
   return lines;

@@ -1,0 +1,60 @@
+// The automatic contact model, the default: the event-driven (Baraff) model unless the scene
+// starts with a crowd of free bodies, then the time-stepping model with a speed setting. Chosen
+// once, at the start, from what the scene holds; `tumble check` and `-v` say which and why.
+//
+// Why this choice, and why at the start. The Baraff model goes back to every first contact:
+// exact, and as cheap as time stepping while events are few (a roll, a rock, a stack, a wall
+// struck by a ball: 1-8 sub-steps per step, measured). Its cost grows with the events: every
+// body that starts free lands at least once, and a crowd of them lands at overlapping times,
+// each landing cutting everyone's step (a 100-piece pile: 17 sub-steps per step and 14-40 s per
+// simulated second, where time stepping with ten Gauss-Seidel sweeps takes 0.1-0.4). Bodies that
+// start resting on something (a wall, an arch, a row of dominoes) rest, or fall one after another.
+//
+// Switching during the run, once the crowding shows, was tried and measured (2026-11-24): a
+// switch needs a window of crowded Baraff steps to see the crowding, and on the 100-box pile one
+// such window (0.05 s at 14-40 s per simulated second) costs more than the whole 5 s run with time
+// stepping, so that a run could not stay within 1.25 times the fast setting; and sub-steps per
+// step do not tell a landing pile (17) from a domino wave (6, with windows above 20) or a wall
+// struck by a ball (8), which time stepping cannot keep within 1 mm. The start can tell them: a
+// pile starts free, the others start resting.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics/contact_model.h"
+
+namespace tumble {
+
+// Moving bodies that start free (touching nothing within the contact margin) at or above which
+// the scene is a crowd of landings. A clip of a few bodies, a stack or a wall has a handful.
+inline constexpr int kAutoCrowd = 20;
+// The time-stepping setting auto uses for a crowd: Gauss-Seidel sweeps per step at most, every
+// island by Gauss-Seidel alone (as Bullet and ODE's quickstep): the benchmark's fastest setting.
+inline constexpr int kAutoCrowdSweeps = 10;
+
+class AutoModel final : public ContactModelStep {
+ public:
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
+  void step(World& world, const StepSettings& settings, SharedStages& shared) override;
+  std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+  double storedEnergy() const override { return chosen_ ? chosen_->storedEnergy() : 0; }
+  ContactModel running(ContactModel) const override {
+    return crowd_ ? ContactModel::TimeStepping : ContactModel::Baraff;
+  }
+
+  bool choseTimeStepping() const { return crowd_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::unique_ptr<ContactModelStep> chosen_;
+  bool crowd_ = false;
+  std::string reason_;
+  StepSettings crowd_settings_;   // the scene's settings with the fast time-stepping solve
+};
+
+// The settings auto runs a crowd with: the scene's, with the fast time-stepping solve.
+StepSettings crowdSettings(const StepSettings& scene);
+
+}  // namespace tumble
