@@ -16,25 +16,28 @@ StepSettings crowdSettings(const StepSettings& scene) {
 
 void AutoModel::start(const World& world, const StepSettings& settings, SharedStages& shared) {
   int moving = 0, free_bodies = 0;
+  std::vector<char> touching(world.bodies.size(), 0);
   if (shared.has_contacts) {
     std::vector<Contact> contacts;
     shared.detector.detect(world, settings.contact, contacts);
-    std::vector<char> touching(world.bodies.size(), 0);
     for (const Contact& c : contacts) touching[c.a] = touching[c.b] = 1;
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-      if (world.bodies[i].is_static) continue;
-      ++moving;
-      free_bodies += touching[i] ? 0 : 1;
-    }
+  }
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    if (world.bodies[i].is_static) continue;
+    ++moving;
+    free_bodies += touching[i] ? 0 : 1;
   }
   // Poisson's and Stronge's laws exist only in the Baraff model: a scene that asks for one asks
   // for that model.
   const bool law = settings.contact.restitution_law != RestitutionLaw::Newton;
-  crowd_ = free_bodies >= kAutoCrowd && !law;
+  crowd_ = shared.has_contacts && free_bodies >= kAutoCrowd && !law;
   char line[300];
   if (law)
     std::snprintf(line, sizeof line, "Baraff: the scene asks for %s restitution law, which only it has",
                   settings.contact.restitution_law == RestitutionLaw::Poisson ? "Poisson's" : "Stronge's");
+  else if (!shared.has_contacts)
+    std::snprintf(line, sizeof line, "Baraff: nothing in this scene can touch (%d moving %s)", moving,
+                  moving == 1 ? "body" : "bodies");
   else if (crowd_)
     std::snprintf(line, sizeof line,
                   "time stepping (%d Gauss-Seidel sweeps): %d of %d moving bodies start free, a crowd of "
