@@ -311,6 +311,21 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
   } else {
     springs_.clear();
   }
+  if (springs_.empty()) {
+    // Nothing can touch within the step: free flight, integrated as the scene asks (RK4 keeps a
+    // free spin's energy to 1e-8 where the sub-steps' semi-implicit turn would lose 1e-4).
+    shared.timed(Forces, [&] {
+      if (shared.apply_gravity)
+        applyGravity(world, shared.wrenches);
+      else
+        for (Wrench& w : shared.wrenches) w = Wrench{};
+    });
+    shared.timed(Integrate, [&] { integrate(world, shared.wrenches, settings); });
+    ++shared.counters.substeps;
+    stored_energy_ = 0;
+    shared.contacts_fresh = false;
+    return;
+  }
   // Velocity Verlet (kick, drift, kick) with the forces at both ends of the sub-step: second
   // order, so an elastic bounce keeps its energy to (ω h)² instead of the ω h of symplectic Euler
   // (an elastic ball came back at 0.993 of its speed). The drift turns the bodies with the
