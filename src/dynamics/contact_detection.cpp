@@ -29,8 +29,10 @@ ContactDetector::ContactDetector(const World& world) {
       near_broad_.add({Aabb{}, static_cast<int>(b), body.is_static});
     }
   }
-  // Something can touch only if a moving body meets another body or the ground.
+  // Something can touch only if a moving body meets another body or the ground; the broad phase
+  // has work only if a moving body can meet another body (the ground is tested directly).
   has_pairs_ = moving > 0 && (moving + fixed > 1 || !planes_.empty());
+  has_body_pairs_ = moving > 0 && moving + fixed > 1;
 }
 
 void ContactDetector::updateBoxes(const World& world, double margin, const std::vector<double>* reach) {
@@ -59,6 +61,7 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
     c.depth = p.depth;
     c.restitution = combineRestitution(A.restitution, B.restitution);
     c.friction = combineFriction(A.friction, B.friction);
+    if (c.friction > 0) ++work_.frictional_contacts;
     c.closest_points = m.closest_points;
     c.radius_a = pieces_[pair.piece_a].shape->rollingRadius(A.q.conjugate() * m.normal);
     c.radius_b = pair.piece_b >= 0 ? pieces_[pair.piece_b].shape->rollingRadius(B.q.conjugate() * m.normal) : 0.0;
@@ -73,8 +76,12 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
   out.clear();
   if (pairs) pairs->clear();
   if (!has_pairs_) return;
-  updateBoxes(world, settings.margin_m, reach);
-  broad_.findPairs(candidates_);
+  candidates_.clear();
+  if (has_body_pairs_) {
+    updateBoxes(world, settings.margin_m, reach);
+    broad_.findPairs(candidates_);
+    ++work_.broad_phase_runs;
+  }
   auto reachOf = [&](int body) { return reach ? (*reach)[body] : 0.0; };
   for (const ProxyPair& c : candidates_) {
     PiecePair key{c.a, c.b};

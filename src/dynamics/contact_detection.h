@@ -62,6 +62,13 @@ class ContactDetector {
   const CollisionHull& hull(int piece) const { return pieces_[piece].hull; }
 
   bool hasCollidablePairs() const { return has_pairs_; }
+  // What detection had to do, counted over the run: a stage a scene does not need stays at zero
+  // ("model only what a scene needs"). Friction rows are built only for frictional contacts.
+  struct Work {
+    long broad_phase_runs = 0;      // sweeps of the broad phase (none with one moving body alone)
+    long frictional_contacts = 0;   // contacts with a friction coefficient above zero
+  };
+  const Work& work() const { return work_; }
   // The thinnest width of any piece (m): infinity when there are none.
   double thinnestPiece() const { return thinnest_; }
 
@@ -89,6 +96,8 @@ class ContactDetector {
   double thinnest_ = std::numeric_limits<double>::infinity();
   ContactManifold manifold_;
   bool has_pairs_ = false;
+  bool has_body_pairs_ = false;   // two bodies, one moving: the broad phase has work
+  mutable Work work_;             // counted in const helpers too
 };
 
 Eigen::Isometry3d poseOf(const RigidBody& body);

@@ -38,6 +38,7 @@ class Pipeline {
   // The contacts found at the end of the last step (for overlays and tests).
   const std::vector<Contact>& contacts() const { return shared_.contacts; }
   const SleepCounters& sleepCounters() const { return shared_.sleep.counters(); }
+  const ContactDetector::Work& detectionWork() const { return shared_.detector.work(); }
   // The contact model that runs the steps (auto's choice, when the scene asked for auto).
   ContactModel runningModel(const StepSettings& settings) const { return model_->running(settings.model); }
   // Energy held in compliant contacts (J; the penalty model's springs), for the energy checks.
