@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "base/error.h"
+#include "dynamics/contact_jacobian.h"
 #include "dynamics/gravity.h"
 #include "dynamics/penalty/contact_stiffness.h"
 
@@ -28,11 +29,6 @@ constexpr double kTouchCut = 0.05;
 // floor never touches one; at rest it damps the spring more than critically).
 constexpr double kRestingClosingShare = 0.1;
 
-Eigen::Matrix3d inverseInertiaWorld(const RigidBody& b) {
-  const Eigen::Matrix3d R = b.rotation();
-  return R * b.inv_inertia_body.asDiagonal() * R.transpose();
-}
-
 // The body's share of 1 / m_eff along `dir` at `point`.
 double inverseMassAlong(const RigidBody& b, const Eigen::Vector3d& point, const Eigen::Vector3d& dir) {
   if (b.is_static) return 0;
@@ -44,11 +40,6 @@ double inverseMassAlong(const RigidBody& b, const Eigen::Vector3d& point, const 
 double inverseMassTangent(const RigidBody& b, const Eigen::Vector3d& point) {
   if (b.is_static) return 0;
   return b.inv_mass + (point - b.x).squaredNorm() * b.inv_inertia_body.maxCoeff();
-}
-
-Eigen::Vector3d velocityAt(const RigidBody& b, const Eigen::Vector3d& point) {
-  if (b.is_static) return Eigen::Vector3d::Zero();
-  return b.velocity() + b.angularVelocity().cross(point - b.x);
 }
 
 const char* lawName(NormalForceLaw law) {
@@ -150,7 +141,7 @@ void PenaltyModel::evaluate(const World& world) {
     const Eigen::Vector3d surface_b = core_b - s.radius_b * s.normal;
     s.depth = (surface_a - surface_b).dot(s.normal);
     s.point = 0.5 * (surface_a + surface_b);
-    const Eigen::Vector3d relative = velocityAt(A, s.point) - velocityAt(B, s.point);
+    const Eigen::Vector3d relative = pointVelocity(A, s.point) - pointVelocity(B, s.point);
     s.rate = relative.dot(s.normal);
     s.slip = relative - s.rate * s.normal;
     if (s.depth <= 0) {
