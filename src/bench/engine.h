@@ -39,6 +39,10 @@ struct EngineSetting {
   std::function<std::unique_ptr<Engine>(const BenchScene&, double dt)> make;
   // Whether this setting runs on a scene, and if not why (shown in the report).
   std::function<std::string(const BenchScene&)> skip_reason = [](const BenchScene&) { return ""; };
+  // s: where above zero, the setting runs at the swept step nearest this one only (unless named on
+  // the command line), for the reason given: a model whose error does not follow the step.
+  double only_dt = 0;
+  std::string only_dt_reason;
 };
 
 // A setting whose engine class E is built as E(scene, dt, options).

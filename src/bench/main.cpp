@@ -32,7 +32,16 @@ tb::SceneResults runScene(const tb::BenchScene& scene, const std::vector<tb::Eng
       out.skipped.push_back(s.name + ": " + why);
       continue;
     }
-    for (tb::RunResult& r : tb::runJobInChild(scene, s, run)) {
+    tb::BenchScene swept = scene;
+    if (s.only_dt > 0 && o.settings.empty() && scene.dts.size() > 1) {
+      const auto nearest = std::min_element(scene.dts.begin(), scene.dts.end(), [&](double a, double b) {
+        return std::abs(std::log(a / s.only_dt)) < std::abs(std::log(b / s.only_dt));
+      });
+      swept.dts = {*nearest};
+      out.skipped.push_back(s.name + ": runs at dt 1/" + std::to_string(std::lround(1 / *nearest)) + " s only: " +
+                            s.only_dt_reason);
+    }
+    for (tb::RunResult& r : tb::runJobInChild(swept, s, run)) {
       // A pile cut short by the wall cap sets the horizon the later engines are also timed and
       // self-checked over, so that every engine is compared on the same stretch of the fall.
       if (r.cut && scene.kind == tb::SceneKind::Pile && (run.head_s == 0 || r.simulated_s < run.head_s)) {

@@ -64,13 +64,31 @@ const char* frictionName(FrictionLaw law) {
   return "?";
 }
 
-// The overlap a Hertz-type spring reaches from overlap δ closing at `rate` (energy balance of the
-// point's effective mass, nothing else acting): its stiffest moment in this impact.
-double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate) {
-  const double n = s.law.exponent, K = s.law.stiffness;
+// The overlap a Hertz-type spring reaches from overlap δ closing at `rate` while the weight of the
+// point's effective mass presses it (g: gravity's magnitude): its stiffest moment in this impact
+// or landing. The energy balance K/(n+1) (x^(n+1) - δ^(n+1)) = v²/2 m + m g (x - δ) has one root
+// above δ; Newton's method from an upper bound comes down to it monotonically (the left side minus
+// the right is convex in x). Without the weight a point touching at rest (δ = 0, v = 0) would
+// have no stiffness at all: the whole step would be one sub-step, in which the body falls
+// g dt²/2 into the contact and is then thrown out (a resting cube left the ground at dt = 1/60).
+double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate, double g) {
+  const double n = s.law.exponent, K = s.law.stiffness, m = 1 / s.inverse_mass;
   const double d = std::max(delta, 0.0), v = std::max(rate, 0.0);
-  const double energy = 0.5 * v * v / s.inverse_mass + K * std::pow(d, n + 1) / (n + 1);
-  return std::pow(energy * (n + 1) / K, 1 / (n + 1));
+  const double a = 0.5 * m * v * v + K * std::pow(d, n + 1) / (n + 1) - m * g * d, b = m * g;
+  // K/(n+1) x^(n+1) <= 2 max(a, b x) at the root: x is below the larger of the two bounds.
+  double x = std::max(std::pow(2 * (n + 1) * std::max(a, 0.0) / K, 1 / (n + 1)), std::pow(2 * (n + 1) * b / K, 1 / n));
+  x = std::max(x, d);
+  for (int i = 0; i < 8 && x > 0; ++i) {
+    const double f = K * std::pow(x, n + 1) / (n + 1) - b * x - a, slope = K * std::pow(x, n) - b;
+    if (!(slope > 0) || f <= 0) break;
+    const double next = x - f / slope;
+    if (!(next < x) || (x - next) <= 1e-6 * x) {
+      x = std::max(next, d);
+      break;
+    }
+    x = std::max(next, d);
+  }
+  return x;
 }
 
 }  // namespace
@@ -203,7 +221,7 @@ double PenaltyModel::stableSubstep(const World& world, double remaining, const E
   // law's slope under the force it may reach, shared out to both bodies by their parts of 1 / m_eff.
   for (const Spring& s : springs_) {
     double k = s.law.stiffness, c = s.law.damping;
-    const double delta = s.law.exponent == 1 ? std::max(s.depth, 0.0) : peakOverlap(s, s.depth, s.rate);
+    const double delta = s.law.exponent == 1 ? std::max(s.depth, 0.0) : peakOverlap(s, s.depth, s.rate, gravity.norm());
     if (s.law.exponent != 1) {
       k = s.law.exponent * s.law.stiffness * std::pow(delta, s.law.exponent - 1);
       if (s.law.damping_factor > 0 && delta > 0) {
