@@ -28,9 +28,10 @@ void printPipelineStats(const Pipeline& pipeline) {
                c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
                c.contacts.active_set_steps, c.contacts.unconverged_sweeps);
   if (!c.model_choice.empty()) std::fprintf(stderr, "  contact model: %s\n", c.model_choice.c_str());
+  if (!c.target_refinement.empty()) std::fprintf(stderr, "  %s\n", c.target_refinement.c_str());
   const ContactDetector::Work& w = pipeline.detectionWork();
-  std::fprintf(stderr, "  work: broad-phase sweeps %ld, frictional contacts found %ld\n", w.broad_phase_runs,
-               w.frictional_contacts);
+  std::fprintf(stderr, "  work: bodies integrated %ld, broad-phase sweeps %ld, frictional contacts found %ld\n",
+               c.bodies_integrated, w.broad_phase_runs, w.frictional_contacts);
   const SleepCounters& s = pipeline.sleepCounters();
   std::fprintf(stderr, "  sleeping: %ld islands fell asleep, %ld woke; %d bodies asleep at the end\n",
                s.islands_slept, s.islands_woken, s.asleep_now);

@@ -136,6 +136,7 @@ int run(const RenderOptions& o) {
   sim_progress.finish();
   times.simulate = secondsSince(start);
   reportFaults(simulator.faults());
+  reportTarget(simulator, o.scene.quiet);
 
   RenderConfig config;
   config.width = scene.render.width;

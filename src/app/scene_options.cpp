@@ -36,6 +36,17 @@ void reportFaults(const FaultCheck& faults) {
   if (faults.total() > 0) std::fprintf(stderr, "tumble: warning: %s\n", faults.summary().c_str());
 }
 
+void reportTarget(const Simulator& simulator, bool quiet) {
+  if (!simulator.target()) return;
+  const TargetWatch& watch = *simulator.target();
+  for (const TargetWatch::Line& line : watch.report()) {
+    if (!line.met)
+      std::fprintf(stderr, "tumble: warning: accuracy target missed: %s\n", line.text.c_str());
+    else if (!quiet)
+      std::fprintf(stderr, "tumble: target: %s\n", line.text.c_str());
+  }
+}
+
 Scene loadSceneWithOverrides(const SceneOptions& o) {
   Scene scene = loadScene(o.scene);
   if (o.fps) setFrameRate(scene, *o.fps);

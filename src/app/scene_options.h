@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dynamics/fault_check.h"
+#include "dynamics/simulator.h"
 #include "scene/scene.h"
 
 namespace tumble {
@@ -28,6 +29,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& options);
 void addKeepGoingOption(CLI::App& command, SceneOptions& options);
 // After a run with --keep-going: prints how many steps had numerical faults, and the first.
 void reportFaults(const FaultCheck& faults);
+// After a run of a scene with an accuracy target: what was measured against it, a line per part
+// ("tumble: target: ..."), unless quiet; a part missed is a warning, printed even when quiet.
+void reportTarget(const Simulator& simulator, bool quiet);
 // Loads the scene and applies the overrides, through the same checks as the file.
 Scene loadSceneWithOverrides(const SceneOptions& options);
 

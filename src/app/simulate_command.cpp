@@ -65,6 +65,7 @@ int run(const SimulateOptions& o) {
   progress.finish();
   double wall = secondsSince(start);
   reportFaults(simulator.faults());
+  reportTarget(simulator, o.scene.quiet);
   if (csv && !o.every_step)
     for (std::size_t k = 0; k < trajectory.frames.size(); ++k)
       writeRows(*csv, trajectory.times[k], names, trajectory.frames[k]);

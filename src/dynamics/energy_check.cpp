@@ -49,6 +49,8 @@ std::optional<EnergyGain> EnergyCheck::afterStep(const World& world, double stor
   const Sample& now = recent_.back();
   const double scale = largest_kinetic_ + (highest_potential_ - lowest_potential_);
   const double tolerance = share_ * scale + drift_allowance_;
+  rise_ = std::max(0.0, now.total - lowest_.total);
+  scale_ = scale;
   if (now.total - lowest_.total <= tolerance) return std::nullopt;
   EnergyGain gain{now.total, lowest_.total, tolerance, -1};
   double most = 0;   // the total rose, so some body's energy rose by more than nothing

@@ -35,6 +35,10 @@ class EnergyCheck {
   // tolerance; updates the lowest and the scale. `stored` (J) is energy the contact model holds
   // (a compliant contact's spring), counted in the total.
   std::optional<EnergyGain> afterStep(const World& world, double stored = 0);
+  // After afterStep: how far the total stands above the lowest (J, 0 before a lowest is taken or
+  // when it is the lowest), and the energy in play it is measured against (J).
+  double rise() const { return rise_; }
+  double scale() const { return scale_; }
 
  private:
   struct Sample {
@@ -50,6 +54,7 @@ class EnergyCheck {
   bool started_ = false;                 // a lowest has been taken
   double largest_kinetic_ = 0, lowest_potential_ = 0, highest_potential_ = 0;
   double kinetic_ = 0, potential_ = 0;   // J: of the last sample
+  double rise_ = 0, scale_ = 0;          // J: of the last afterStep
 };
 
 }  // namespace tumble

@@ -105,15 +105,18 @@ Eigen::Quaterniond rotationOver(const Eigen::Vector3d& w, double dt) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, w / w.norm()));
 }
 
-void integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
+long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
+  long advanced = 0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     RigidBody& body = world.bodies[i];
     if (body.is_static) continue;
+    ++advanced;
     switch (settings.integrator) {
       case Integrator::Rk4: stepRk4(body, wrenches[i], settings.dt); break;
       case Integrator::SemiImplicitEuler: stepSemiImplicitEuler(body, wrenches[i], settings.dt); break;
     }
   }
+  return advanced;
 }
 
 }  // namespace tumble

@@ -16,8 +16,9 @@ struct Wrench {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();   // N m, about the centre of mass
 };
 
-// `wrenches` has one entry per body (static bodies' entries are ignored).
-void integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings);
+// `wrenches` has one entry per body (static bodies' entries are ignored). Returns how many bodies
+// it advanced (the moving ones): the work counter that shows static bodies cost nothing.
+long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings);
 
 // The rotation by angle |w| dt about w, as a unit quaternion (the exact exponential map, not the
 // first-order q + dt/2 w q that leaves the unit sphere).

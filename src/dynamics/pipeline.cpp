@@ -42,6 +42,10 @@ void Pipeline::settleAtRest(World& world, const StepSettings& settings) {
 
 std::vector<std::string> Pipeline::describe(const StepSettings& settings) const {
   std::vector<std::string> lines = model_->describe(settings, shared_);
+  // Auto steers by the target and says how (auto_model.h); a model the scene names runs as asked.
+  if (settings.target.any() && settings.model != ContactModel::Auto)
+    lines.push_back("target      measured and reported at the end, not steered by: the scene names its contact "
+                    "model (auto refines its step to meet a penetration target)");
   if (!shared_.has_contacts) return lines;
   char line[200];
   if (settings.sleep.enabled)

@@ -76,6 +76,18 @@ struct SleepSettings {
   double after_s = 0.5;
 };
 
+// What a scene may ask of a run's accuracy ("simulation": {"target": {...}}): the automatic model
+// chooses and tunes to meet it (auto/auto_model.h), and every run measures it (target_watch.h) and
+// says at the end whether it was met. Zero: no target.
+struct AccuracyTarget {
+  double penetration_m = 0;   // m: the deepest any contact may be at the end of a step
+  // The largest rise of the total energy (kinetic + gravitational + a compliant contact's spring)
+  // above the lowest it reached, as a share of the energy in play: the fault check's measure
+  // (energy_check.h). Dissipation is physics; a rise is error.
+  double energy_drift = 0;
+  bool any() const { return penetration_m > 0 || energy_drift > 0; }
+};
+
 struct StepSettings {
   double dt = 1.0 / 240;                          // s: fixed step, divides the frame interval
   Integrator integrator = Integrator::Rk4;        // how (x, q, P, L) advance over dt
@@ -84,6 +96,7 @@ struct StepSettings {
   int time_stepping_sweeps = 200;                 // Gauss-Seidel sweeps per step at most (TimeStepping)
   PenaltySettings penalty;                        // force and friction laws (Penalty)
   SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)
+  AccuracyTarget target;                          // what auto must meet, and every run reports
 };
 
 // Tunings: fixed values the solvers use, not scene settings.

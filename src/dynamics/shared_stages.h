@@ -29,11 +29,13 @@ struct StageTime {
 struct PipelineCounters {
   long substeps = 0, back_steps = 0, bisection_evaluations = 0, stuck_substeps = 0;
   long projections = 0;
+  long bodies_integrated = 0;    // body advances over dt or a sub-step (trial ones too): static bodies never
   long capped_projections = 0;   // Baraff model: corrections not made, a body's reach for the step spent
   long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
   ContactSolveStats contacts;
   std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
   std::string model_choice;           // what the automatic model chose and why (empty otherwise)
+  std::string target_refinement;      // how auto refined its steps to a penetration target (empty otherwise)
 };
 
 struct SharedStages {

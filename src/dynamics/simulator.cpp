@@ -9,7 +9,13 @@ BodySample sampleOf(const RigidBody& body) {
 }
 
 Simulator::Simulator(World world, const SimulationPlan& plan)
-    : world_(std::move(world)), plan_(plan), pipeline_(world_, plan.step), faults_(world_, FaultSettings::forModel(pipeline_.runningModel(plan.step))) {}
+    : world_(std::move(world)),
+      plan_(plan),
+      pipeline_(world_, plan.step),
+      faults_(world_, FaultSettings::forModel(pipeline_.runningModel(plan.step))) {
+  if (plan.step.target.any())
+    target_.emplace(world_, plan.step.target, FaultSettings::forModel(pipeline_.runningModel(plan.step)).energy_repaid_within);
+}
 
 // A fault stops the run with Error(Software) the step it happens, unless the plan keeps going.
 void Simulator::checkFaults() {
@@ -23,6 +29,7 @@ void Simulator::advanceFrame(const std::function<void(const World&)>& on_step) {
     pipeline_.step(world_, plan_.step);
     world_.time = static_cast<double>(++steps_) * plan_.step.dt;  // exact, never a running sum
     checkFaults();
+    if (target_) target_->afterStep(world_, pipeline_);
     if (on_step) on_step(world_);
   }
 }

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "dynamics/fault_check.h"
 #include "dynamics/pipeline.h"
 #include "dynamics/settings.h"
+#include "dynamics/target_watch.h"
 #include "dynamics/trajectory.h"
 #include "dynamics/world.h"
 
@@ -34,6 +36,8 @@ class Simulator {
   const World& world() const { return world_; }
   const Pipeline& pipeline() const { return pipeline_; }
   const FaultCheck& faults() const { return faults_; }
+  // The run measured against the scene's accuracy target; empty when the scene sets none.
+  const std::optional<TargetWatch>& target() const { return target_; }
 
  private:
   void checkFaults();
@@ -42,6 +46,7 @@ class Simulator {
   SimulationPlan plan_;
   Pipeline pipeline_;
   FaultCheck faults_;
+  std::optional<TargetWatch> target_;
   long steps_ = 0;
 };
 

@@ -91,6 +91,22 @@ void readPenalty(ObjectReader& in, PenaltySettings& p) {
   in.rejectUnknownKeys();
 }
 
+// "target": what the run's accuracy must be (settings.h, AccuracyTarget). The automatic model
+// meets it by its choice and its contact tolerance; a scene that names its model gets it measured
+// and reported. The floors are what any model can hold: the finest contact tolerance there is,
+// and the rounding of an energy sum.
+void readTarget(ObjectReader& in, StepSettings& step, bool tolerance_given) {
+  AccuracyTarget& t = step.target;
+  t.penetration_m = in.number("penetration_m", 0, {1e-9, 1, false, false});
+  t.energy_drift = in.number("energy_drift", 0, {1e-12, 1, false, false});
+  if (in.has("penetration_m") && tolerance_given && step.contact.tolerance_m > t.penetration_m)
+    in.fail("penetration_m", "the scene's \"contact_tolerance_m\" (" + formatNumber(step.contact.tolerance_m) +
+                                 " m) lets contacts end a step deeper than this target (" +
+                                 formatNumber(t.penetration_m) + " m): drop one, or make the tolerance smaller");
+  in.rejectUnknownKeys();
+  if (!t.any()) in.fail("", "a target needs \"penetration_m\" or \"energy_drift\" (or both)");
+}
+
 void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) {
   StepSettings& step = sim.step;
   step.integrator = readIntegrator(in, "integrator", step.integrator);
@@ -121,6 +137,7 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
                                  : law == "stronge" ? RestitutionLaw::Stronge
                                                     : RestitutionLaw::Newton;
   step.time_stepping_sweeps = in.integer("time_stepping_sweeps", step.time_stepping_sweeps, 1, 100000);
+  if (auto target = in.optionalObject("target")) readTarget(*target, step, in.has("contact_tolerance_m"));
   step.sleep.enabled = in.boolean("sleep", step.sleep.enabled);
   step.sleep.speed_m_s = in.number("sleep_speed_m_s", step.sleep.speed_m_s, {0, 10, true, false});
   step.sleep.spin_rad_s = in.number("sleep_spin_rad_s", step.sleep.spin_rad_s, {0, 100, true, false});

@@ -101,3 +101,25 @@ TEST_CASE("simulate writes an exact, stable trajectory CSV", "[cli]") {
   // 9 frame intervals x 24 steps (1/240 s nearest divisor of 1/10 s) + the initial state, x 2 bodies
   CHECK(std::count(tc.begin(), tc.end(), '\n') == 1 + 2 * (9 * 24 + 1));
 }
+
+TEST_CASE("simulate reports an accuracy target, and a miss as a warning even with -q, still exiting 0", "[cli]") {
+  fs::path dir = freshDir("target");
+  auto scene = [&](const std::string& name, const std::string& simulation) {
+    std::ofstream(dir / name) << R"({ "schema_version": 1, "render": { "fps": 10, "frames": 12 },
+      "simulation": )" << simulation << R"(,
+      "bodies": [ { "name": "ground", "shape": "plane" },
+                  { "name": "cube", "shape": "box", "position_m": [0, 0, 1], "restitution": 0.5 } ] })";
+    return (dir / name).string();
+  };
+  // The Baraff model lands the cube within its 1e-6 m tolerance: a 1e-9 m target is missed.
+  auto missed = runTumble("simulate -q " + scene("missed.json", R"({ "contact_model": "baraff",
+      "target": { "penetration_m": 1e-9 } })"));
+  CHECK(missed.exit_code == 0);
+  CHECK(missed.output.find("tumble: warning: accuracy target missed: deepest contact") != std::string::npos);
+  CHECK(missed.output.find("\"cube\" and \"ground\"") != std::string::npos);
+  auto met = runTumble("simulate " + scene("met.json", R"({ "target": { "penetration_m": 1e-3, "energy_drift": 1e-3 } })"));
+  CHECK(met.exit_code == 0);
+  CHECK(met.output.find("tumble: target: deepest contact") != std::string::npos);
+  CHECK(met.output.find("tumble: target: largest energy rise") != std::string::npos);
+  CHECK(met.output.find("missed") == std::string::npos);
+}

@@ -92,3 +92,19 @@ TEST_CASE("nothing can touch: no detection, no broad phase, no back-step", "[tri
   CHECK(spin.counters.back_steps == 0);
   CHECK(spin.detect_s == 0);
 }
+
+TEST_CASE("static bodies are never integrated: fifty of them add no integration, and change no bit of the motion",
+          "[trim]") {
+  // One box flying free in no gravity, far from everything: one sub-step per step, one body each.
+  const Run alone = run(worldOf({box("box", {0, 0, 0}, 0.5)}, Eigen::Vector3d::Zero()), 240);
+  std::vector<BodySpec> crowd{box("box", {0, 0, 0}, 0.5)};
+  for (int i = 0; i < 50; ++i) {
+    BodySpec wall = box("wall_" + std::to_string(i), {200.0 + i, 50, 0}, 0.5);
+    wall.is_static = true;
+    crowd.push_back(wall);
+  }
+  const Run walled = run(worldOf(crowd, Eigen::Vector3d::Zero()), 240);
+  CHECK(alone.counters.bodies_integrated == 240);
+  CHECK(walled.counters.bodies_integrated == 240);
+  CHECK(sameState(alone.world.bodies[0], walled.world.bodies[0]));
+}

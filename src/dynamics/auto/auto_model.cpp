@@ -1,5 +1,6 @@
 #include "dynamics/auto/auto_model.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "dynamics/pipeline.h"
@@ -49,23 +50,51 @@ void AutoModel::start(const World& world, const StepSettings& settings, SharedSt
                   free_bodies, moving, kAutoCrowd);
   reason_ = line;
   chosen_ = makeContactModel(crowd_ ? ContactModel::TimeStepping : ContactModel::Baraff);
-  crowd_settings_ = crowdSettings(settings);
-  chosen_->start(world, crowd_ ? crowd_settings_ : settings, shared);
+  run_settings_ = crowd_ ? crowdSettings(settings) : settings;
+  const double target = settings.target.penetration_m;
+  if (target > 0) {
+    run_settings_.contact.tolerance_m = std::min(run_settings_.contact.tolerance_m, target);
+    if (shared.has_contacts) refinement_.emplace(world, target);
+  }
+  chosen_->start(world, run_settings_, shared);
   shared.counters.model_choice = "auto chose " + reason_;
+  if (refinement_) shared.counters.target_refinement = refinement_->summary();
 }
 
 void AutoModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
-  if (!crowd_) {
-    chosen_->step(world, settings, shared);
+  run_settings_.dt = settings.dt;   // the only setting a caller may change between steps
+  if (!refinement_) {
+    chosen_->step(world, run_settings_, shared);
     return;
   }
-  crowd_settings_.dt = settings.dt;   // the only setting a caller may change between steps
-  chosen_->step(world, crowd_settings_, shared);
+  refinement_->step(world, run_settings_, shared, *chosen_);
+  const StepRefinement::Counters& c = refinement_->counters();
+  if (c.retaken_steps != reported_retakes_ || c.missed_steps != reported_misses_) {
+    reported_retakes_ = c.retaken_steps;
+    reported_misses_ = c.missed_steps;
+    shared.counters.target_refinement = refinement_->summary();
+  }
 }
 
 std::vector<std::string> AutoModel::describe(const StepSettings& settings, const SharedStages& shared) const {
+  StepSettings shown = run_settings_;
+  shown.dt = settings.dt;
   std::vector<std::string> lines{"model       auto chose " + reason_};
-  for (const std::string& l : chosen_->describe(crowd_ ? crowd_settings_ : settings, shared)) lines.push_back(l);
+  for (const std::string& l : chosen_->describe(shown, shared)) lines.push_back(l);
+  char line[300];
+  if (settings.target.penetration_m > 0) {
+    std::snprintf(line, sizeof line,
+                  "target      penetration %g m: contact tolerance %g m; a step that ends deeper is taken back and "
+                  "run again in halves (up to %d sub-steps)",
+                  settings.target.penetration_m, shown.contact.tolerance_m, kMaxRefinement);
+    lines.push_back(line);
+  }
+  if (settings.target.energy_drift > 0) {
+    std::snprintf(line, sizeof line,
+                  "target      energy rise %g of the energy in play: measured, and reported at the end",
+                  settings.target.energy_drift);
+    lines.push_back(line);
+  }
   return lines;
 }
 

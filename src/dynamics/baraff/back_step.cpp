@@ -79,7 +79,7 @@ double BackStepper::firstContact(World& world, const StepSettings& settings, dou
   auto depth_at = [&](double t) {
     trial.start_state.restore(world);
     sub.dt = t;
-    integrate(world, shared.wrenches, sub);
+    shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub);
     double worst = -std::numeric_limits<double>::infinity();
     for (const Watch& w : watched_) worst = std::max(worst, watchedDepth(world, w, settings, shared.detector));
     return worst;

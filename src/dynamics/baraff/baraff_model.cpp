@@ -62,7 +62,7 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     for (std::size_t i = 0; i < shared.contacts.size(); ++i)
       lifting_[i] = normalVelocity(world, shared.contacts[i]) > settings.contact.resting_speed_m_s;
   }
-  shared.timed(Integrate, [&] { integrate(world, shared.wrenches, sub); });
+  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub); });
   if (!shared.has_contacts) return h;
 
   shared.timed(Detect, [&] { shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_); });

@@ -329,7 +329,7 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
       else
         for (Wrench& w : shared.wrenches) w = Wrench{};
     });
-    shared.timed(Integrate, [&] { integrate(world, shared.wrenches, settings); });
+    shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
     ++shared.counters.substeps;
     stored_energy_ = 0;
     shared.contacts_fresh = false;
@@ -373,7 +373,7 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
     forces(h);
     kick(h / 2);
     drift.dt = h;
-    shared.timed(Integrate, [&] { integrate(world, idle_, drift); });
+    shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, idle_, drift); });
     // The end's dampers see the end's velocity, predicted by a second kick with the start's forces
     // (taken back after): with the half-step velocity instead, a damper is first order in γ h and
     // Kelvin-Voigt's e = 0.3 came out 0.28.

@@ -37,7 +37,7 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
     });
   }
   for (Wrench& w : shared.wrenches) w = Wrench{};
-  shared.timed(Integrate, [&] { integrate(world, shared.wrenches, settings); });
+  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
 }
 
 std::vector<std::string> TimeSteppingModel::describe(const StepSettings& settings, const SharedStages& shared) const {
