@@ -111,8 +111,9 @@ inline constexpr double kStepRemainder = 1e-12;
 // Baraff model: a first contact found earlier than this share of the sub-step is "at once": cutting
 // there would stall the step in sub-steps of nothing (back_step.cpp).
 inline constexpr double kImmediateContact = 1e-6;
-// Time-stepping model: drift projection passes per step; each reads the depths the earlier
-// pushes left. One pass cannot keep up under a load (a column of boxes sank 6-8 cm in the pile).
+// Drift projection passes (per step in the time-stepping model, per sub-step in the Baraff model);
+// each reads the depths the earlier pushes left. One pass cannot keep up under a load (a column of
+// boxes sank 6-8 cm in the pile) or in a chain (a block pushed out of the one above into the ground).
 inline constexpr int kProjectionPasses = 8;
 // Pivoting: passes over the friction bounds at most; the bounds settle to 1e-9 of the largest.
 inline constexpr int kMaxFrictionPasses = 12;

@@ -56,14 +56,21 @@ TEST_CASE("a NaN in a body's state stops the run that step, naming the body and 
 }
 
 TEST_CASE("bodies sunk into each other are a deep penetration fault", "[faults]") {
-  // The lid is put inside the crate, 0.8 m deep: far beyond half the thinner box (0.5 m). A scene
-  // cannot start that way (buildWorld refuses it, start_overlap.h), so the test moves the lid in
-  // after building, as a failing contact solve would.
-  BuiltWorld built = twoBoxes("[5, 0, 0.5]");
-  built.world.bodies[2].x = built.world.bodies[1].x + Eigen::Vector3d(0, 0, 0.2);
+  // The crate is put inside a 3 m block, centre on centre: 2 m deep, far beyond half the thinner
+  // box (0.5 m), and beyond what the position correction may move a body in one step (also half
+  // its thinnest piece: drift_correction.h), which repairs a shallower sinking. A scene cannot
+  // start that way (buildWorld refuses it, start_overlap.h), so the test moves the crate in after
+  // building, as a failing contact solve would.
+  Scene scene = parseScene(R"({"schema_version": 1, "bodies": [
+    {"name": "ground", "shape": "plane"},
+    {"name": "crate", "shape": "box", "position_m": [0, 0, 5]},
+    {"name": "block", "shape": "box", "size_m": [3, 3, 3], "position_m": [10, 0, 1.5]}]})",
+                           "scenes/faults.json");
+  BuiltWorld built = buildWorld(scene);
+  built.world.bodies[1].x = built.world.bodies[2].x;
   Simulator sim(std::move(built.world), {built.step, 8, 30});
   std::string message = faultOf(sim);
-  CHECK_THAT(message, Catch::Contains("step 1;") && Catch::Contains("bodies \"crate\" and \"lid\" overlap by") &&
+  CHECK_THAT(message, Catch::Contains("step 1;") && Catch::Contains("bodies \"crate\" and \"block\" overlap by") &&
                           Catch::Contains("half the thinner piece"));
 }
 

@@ -80,13 +80,24 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   } else {
     shared.contacts_fresh = false;
   }
-  shared.timed(Correct, [&] {
-    const CorrectionCount n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m,
-                                                  shared.extents);
+  // Drift correction on the contacts of the state the sub-step ends in: after a back-step the ones
+  // in hand are the sub-step's start's, so they are found again first (the next sub-step would
+  // find them anyway). Passes repeat while a push moved something, each on the contacts the last
+  // left: a block pushed out of the one above it can be pushed into the ground below.
+  for (int pass = 0; pass < tuning::kProjectionPasses; ++pass) {
+    if (!shared.contacts_fresh) {
+      shared.timed(Detect, detect);
+      shared.contacts_fresh = true;
+    }
+    CorrectionCount n;
+    shared.timed(Correct, [&] {
+      n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m, shared.extents);
+    });
     counters.projections += n.moved;
     counters.capped_projections += n.capped;
-    if (n.moved > 0) shared.contacts_fresh = false;
-  });
+    if (n.moved == 0) break;
+    shared.contacts_fresh = false;
+  }
   return taken;
 }
 

@@ -10,7 +10,8 @@
 //               tunnelling bound                                   tunnelling_bound.h
 //   detect      the contacts at the end of the sub-step
 //   back-step   bisection to the first contact if it ends too deep back_step.h
-//   correct     project out residual penetration                  drift_correction.h
+//   correct     project out residual penetration, in passes on the    drift_correction.h
+//               contacts of the end state, while a pass moves something
 #pragma once
 
 #include <vector>
