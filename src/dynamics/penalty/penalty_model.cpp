@@ -64,13 +64,32 @@ const char* frictionName(FrictionLaw law) {
   return "?";
 }
 
-// The overlap a Hertz-type spring reaches from overlap δ closing at `rate` (energy balance of the
-// point's effective mass, nothing else acting): its stiffest moment in this impact.
-double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate) {
+// The overlap a Hertz-type spring reaches from overlap δ closing at `rate`, with the weight of
+// its point's effective mass W = m_eff |g| pressing on: its stiffest moment in this impact. The
+// energy balance K δp^(n+1)/(n+1) - W δp = ½ m_eff v² + K δ^(n+1)/(n+1) - W δ, its larger root.
+// Without the weight, a point resting at δ = 0 would reach no overlap and get no stiffness at all,
+// and its first sub-step would span the whole step with no spring in it. The left side is convex,
+// so Newton's method from the upper bound A + B (A the root without the weight, B the one without
+// the motion) comes down onto the root; stopping within 1 % leaves it a little above, the safe
+// side for a sub-step bound.
+double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate, double gravity) {
   const double n = s.law.exponent, K = s.law.stiffness;
   const double d = std::max(delta, 0.0), v = std::max(rate, 0.0);
-  const double energy = 0.5 * v * v / s.inverse_mass + K * std::pow(d, n + 1) / (n + 1);
-  return std::pow(energy * (n + 1) / K, 1 / (n + 1));
+  const double weight = gravity / s.inverse_mass;
+  const double motion = 0.5 * v * v / s.inverse_mass + K * std::pow(d, n + 1) / (n + 1);
+  const double free_peak = std::pow(motion * (n + 1) / K, 1 / (n + 1));
+  if (!(weight > 0)) return free_peak;
+  double x = free_peak + std::pow((n + 1) * weight / K, 1 / n);
+  for (int i = 0; i < 30; ++i) {
+    const double xn = std::pow(x, n);
+    const double excess = K * xn * x / (n + 1) - weight * x - (motion - weight * d);
+    const double slope = K * xn - weight;
+    if (!(excess > 0) || !(slope > 0)) break;
+    const double step = excess / slope;
+    x -= step;
+    if (step < 0.01 * x) break;
+  }
+  return x;
 }
 
 }  // namespace
@@ -203,7 +222,7 @@ double PenaltyModel::stableSubstep(const World& world, double remaining, const E
   // law's slope under the force it may reach, shared out to both bodies by their parts of 1 / m_eff.
   for (const Spring& s : springs_) {
     double k = s.law.stiffness, c = s.law.damping;
-    const double delta = s.law.exponent == 1 ? std::max(s.depth, 0.0) : peakOverlap(s, s.depth, s.rate);
+    const double delta = s.law.exponent == 1 ? std::max(s.depth, 0.0) : peakOverlap(s, s.depth, s.rate, gravity.norm());
     if (s.law.exponent != 1) {
       k = s.law.exponent * s.law.stiffness * std::pow(delta, s.law.exponent - 1);
       if (s.law.damping_factor > 0 && delta > 0) {
