@@ -1,5 +1,6 @@
-// A penalty force law's own one-dimensional impact (dynamics/penalty/force_laws.h), integrated
-// independently of the model: the reference the model's bounces are held to.
+// The penalty model's normal force laws (dynamics/penalty/force_laws.h) for the tests: their
+// names, and a law's own one-dimensional impact integrated independently of the model, the
+// reference the model's bounces are held to.
 #pragma once
 
 #include <cmath>
@@ -7,6 +8,19 @@
 #include "dynamics/penalty/force_laws.h"
 
 namespace tumble::test {
+
+struct NamedLaw {
+  NormalForceLaw law;
+  const char* name;   // as a scene file names it
+};
+inline constexpr NamedLaw kNormalLaws[] = {{NormalForceLaw::Hooke, "hooke"},
+                                           {NormalForceLaw::KelvinVoigt, "kelvin_voigt"},
+                                           {NormalForceLaw::Hertz, "hertz"},
+                                           {NormalForceLaw::HuntCrossley, "hunt_crossley"},
+                                           {NormalForceLaw::LankaraniNikravesh, "lankarani_nikravesh"},
+                                           {NormalForceLaw::Flores, "flores"}};
+// hooke and hertz: no damper, every contact gives back its closing speed.
+inline bool isElastic(NormalForceLaw law) { return law == NormalForceLaw::Hooke || law == NormalForceLaw::Hertz; }
 
 // m δ'' = -F(δ, δ') + m g from δ = 0 at closing speed v0 (g: a steady pull pressing the point in,
 // 0 for none), by RK4 in 4000 steps per peak time; returns the speed it leaves with over v0.
