@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../dynamics/penalty_impact.h"
 #include "base/error.h"
 #include "dynamics/penalty/force_laws.h"
 #include "hard_run.h"
@@ -74,26 +75,6 @@ StepSettings penalty(NormalForceLaw law, double dt) {
   return s;
 }
 
-// The law's own 1-D impact: m δ'' = -F(δ, δ') from δ = 0 at closing speed v0 until the force is
-// zero on the way out; returns the exit speed over v0.
-double oneDimensionalRestitution(const NormalLawState& law, double mass, double v0) {
-  const double n = law.exponent;
-  const double peak = std::pow((n + 1) * mass * v0 * v0 / (2 * law.stiffness), 1 / (n + 1));
-  const double h = peak / v0 / 4000;
-  double d = 0, v = v0;
-  auto acc = [&](double dd, double vv) { return -normalForce(law, dd, vv) / mass; };
-  for (long i = 0; i < 100000000; ++i) {
-    const double k1v = acc(d, v), k1d = v;
-    const double k2v = acc(d + h / 2 * k1d, v + h / 2 * k1v), k2d = v + h / 2 * k1v;
-    const double k3v = acc(d + h / 2 * k2d, v + h / 2 * k2v), k3d = v + h / 2 * k2v;
-    const double k4v = acc(d + h * k3d, v + h * k3v), k4d = v + h * k3v;
-    d += h / 6 * (k1d + 2 * k2d + 2 * k3d + k4d);
-    v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    if (d <= 0 || (v < 0 && normalForce(law, d, v) <= 0)) return -v / v0;
-  }
-  return NAN;
-}
-
 struct Bounce {
   double e = 0;          // measured
   double reference = 0;  // the law's own 1-D equation
@@ -124,7 +105,7 @@ Bounce bounce(NormalForceLaw law, double e) {
     state.damping = 2 * kelvinVoigtDampingRatio(e) * std::sqrt(state.stiffness * out.mass);
   state.damping_factor = hertzDampingFactor(law, e);
   state.closing_speed = v0;
-  out.reference = oneDimensionalRestitution(state, out.mass, v0);
+  out.reference = test::oneDimensionalRestitution(state, out.mass, v0);
   return out;
 }
 
@@ -132,15 +113,8 @@ Bounce bounce(NormalForceLaw law, double e) {
 
 TEST_CASE("penalty: each damping law's measured restitution follows its own equation and the e it is designed for near 1",
           "[penalty]") {
-  struct Law {
-    NormalForceLaw law;
-    const char* name;
-  };
-  const Law laws[] = {{NormalForceLaw::KelvinVoigt, "kelvin_voigt"},
-                      {NormalForceLaw::HuntCrossley, "hunt_crossley"},
-                      {NormalForceLaw::LankaraniNikravesh, "lankarani_nikravesh"},
-                      {NormalForceLaw::Flores, "flores"}};
-  for (const Law& l : laws) {
+  for (const test::NamedLaw& l : test::kNormalLaws) {
+    if (test::isElastic(l.law)) continue;   // the next test
     for (double e : {0.3, 0.6, 0.9, 0.95}) {
       const Bounce b = bounce(l.law, e);
       std::printf("penalty restitution: %-20s asked %.2f measured %.5f (its own equation %.5f; %+.2f %% from the asked)\n",

@@ -64,29 +64,30 @@ const char* frictionName(FrictionLaw law) {
   return "?";
 }
 
-// The overlap a Hertz-type spring reaches from overlap δ closing at `rate` while the weight of the
-// point's effective mass presses it (g: gravity's magnitude): its stiffest moment in this impact
-// or landing. The energy balance K/(n+1) (x^(n+1) - δ^(n+1)) = v²/2 m + m g (x - δ) has one root
-// above δ; Newton's method from an upper bound comes down to it monotonically (the left side minus
-// the right is convex in x). Without the weight a point touching at rest (δ = 0, v = 0) would
-// have no stiffness at all: the whole step would be one sub-step, in which the body falls
-// g dt²/2 into the contact and is then thrown out (a resting cube left the ground at dt = 1/60).
-double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate, double g) {
-  const double n = s.law.exponent, K = s.law.stiffness, m = 1 / s.inverse_mass;
+// The overlap a Hertz-type spring reaches from overlap δ closing at `rate`, with the weight of
+// its point's effective mass W = m_eff |g| pressing on: its stiffest moment in this impact. The
+// energy balance K δp^(n+1)/(n+1) - W δp = ½ m_eff v² + K δ^(n+1)/(n+1) - W δ, its larger root.
+// Without the weight, a point resting at δ = 0 would reach no overlap and get no stiffness at all,
+// and its first sub-step would span the whole step with no spring in it. The left side is convex,
+// so Newton's method from the upper bound A + B (A the root without the weight, B the one without
+// the motion) comes down onto the root; stopping within 1 % leaves it a little above, the safe
+// side for a sub-step bound.
+double peakOverlap(const PenaltyModel::Spring& s, double delta, double rate, double gravity) {
+  const double n = s.law.exponent, K = s.law.stiffness;
   const double d = std::max(delta, 0.0), v = std::max(rate, 0.0);
-  const double a = 0.5 * m * v * v + K * std::pow(d, n + 1) / (n + 1) - m * g * d, b = m * g;
-  // K/(n+1) x^(n+1) <= 2 max(a, b x) at the root: x is below the larger of the two bounds.
-  double x = std::max(std::pow(2 * (n + 1) * std::max(a, 0.0) / K, 1 / (n + 1)), std::pow(2 * (n + 1) * b / K, 1 / n));
-  x = std::max(x, d);
-  for (int i = 0; i < 8 && x > 0; ++i) {
-    const double f = K * std::pow(x, n + 1) / (n + 1) - b * x - a, slope = K * std::pow(x, n) - b;
-    if (!(slope > 0) || f <= 0) break;
-    const double next = x - f / slope;
-    if (!(next < x) || (x - next) <= 1e-6 * x) {
-      x = std::max(next, d);
-      break;
-    }
-    x = std::max(next, d);
+  const double weight = gravity / s.inverse_mass;
+  const double motion = 0.5 * v * v / s.inverse_mass + K * std::pow(d, n + 1) / (n + 1);
+  const double free_peak = std::pow(motion * (n + 1) / K, 1 / (n + 1));
+  if (!(weight > 0)) return free_peak;
+  double x = free_peak + std::pow((n + 1) * weight / K, 1 / n);
+  for (int i = 0; i < 30; ++i) {
+    const double xn = std::pow(x, n);
+    const double excess = K * xn * x / (n + 1) - weight * x - (motion - weight * d);
+    const double slope = K * xn - weight;
+    if (!(excess > 0) || !(slope > 0)) break;
+    const double step = excess / slope;
+    x -= step;
+    if (step < 0.01 * x) break;
   }
   return x;
 }
@@ -270,16 +271,23 @@ double PenaltyModel::stableSubstep(const World& world, double remaining, const E
     }
   }
   stable_ = h;
-  // A point about to touch: end the sub-step where it touches (under gravity's pull too).
+  // A point about to touch: end the sub-step where it touches, with gravity closing the gap at
+  // the difference of the two bodies' pulls along the normal (none between two falling bodies).
+  // Taken at the closing speed the sub-step would end with, the instant came early: the sub-step
+  // ended short of the touch, the cut to the touch was then too short to take (kTouchCut), and
+  // the next sub-step crossed it from outside (a dropped cube's Kelvin-Voigt e came out 1 % high).
+  const auto falls = [&](int body) { return world.bodies[body].is_static ? 0.0 : 1.0; };
   double cut = h;
   for (const Spring& s : springs_) {
     if (s.depth > 0) continue;
-    const double closing = s.rate + gravity.norm() * h;
-    if (!(closing > 0)) continue;
-    // Just past the touching instant, so that the next sub-step starts inside with the law's
-    // force at δ = 0+ (Kelvin-Voigt's damper pushes from the first instant: started from outside,
-    // its first half-kick would miss D δ' h / 2, and e = 0.3 came out 0.31).
-    const double when = -s.depth / closing * (1 + 1e-6);
+    const double pull = gravity.dot(s.normal) * (falls(s.a) - falls(s.b));
+    const double gap = -s.depth, square = s.rate * s.rate + 2 * pull * gap;
+    if (!(square >= 0) || !(s.rate + std::sqrt(square) > 0)) continue;   // it never touches
+    // Just past the touching instant (the first root of gap = rate t + pull t² / 2), so that the
+    // next sub-step starts inside with the law's force at δ = 0+ (Kelvin-Voigt's damper pushes
+    // from the first instant: started from outside, its first half-kick would miss D δ' h / 2,
+    // and e = 0.3 came out 0.31).
+    const double when = 2 * gap / (s.rate + std::sqrt(square)) * (1 + 1e-6);
     if (when < cut && when > kTouchCut * h) cut = when;
   }
   return cut;
@@ -329,7 +337,7 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
       else
         for (Wrench& w : shared.wrenches) w = Wrench{};
     });
-    shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
+    shared.timed(Integrate, [&] { integrate(world, shared.wrenches, settings); });
     ++shared.counters.substeps;
     stored_energy_ = 0;
     shared.contacts_fresh = false;
@@ -373,7 +381,7 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
     forces(h);
     kick(h / 2);
     drift.dt = h;
-    shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, idle_, drift); });
+    shared.timed(Integrate, [&] { integrate(world, idle_, drift); });
     // The end's dampers see the end's velocity, predicted by a second kick with the start's forces
     // (taken back after): with the half-step velocity instead, a damper is first order in γ h and
     // Kelvin-Voigt's e = 0.3 came out 0.28.

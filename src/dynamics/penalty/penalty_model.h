@@ -16,8 +16,9 @@
 // the largest frequency of the coupled springs is at most the largest sum over a body's springs of
 // k / m_eff), so per body the sums of k / m_eff, c / m_eff and the friction law's slope f_n / m_eff
 // bound the step: h <= 0.1 / ω, h <= 0.5 / γ. A Hertz-type spring stiffens as it closes; it is
-// bounded by its stiffness at the overlap the closing speed would reach. A point about to touch
-// cuts the sub-step where it touches, so its impact starts at δ = 0 with its true closing speed.
+// bounded by its stiffness at the overlap its closing speed and its point's weight would reach. A
+// point about to touch cuts the sub-step where it touches, so its impact starts at δ = 0 with its
+// true closing speed.
 // When a contact needs more than `max_substeps` sub-steps per step, the run stops with the pair,
 // its stiffness and the step it needs: never a silent blow-up.
 #pragma once
