@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "dynamics/body_extent.h"
 
 namespace tumble {
 
 TargetWatch::TargetWatch(const World& world, const AccuracyTarget& target, int energy_repaid_within)
     : target_(target), energy_(world, 0, 0, energy_repaid_within) {
-  const std::vector<BodyExtent> extents = extentsOf(world);
-  for (std::size_t i = 0; i < world.bodies.size(); ++i)
-    if (!world.bodies[i].is_static) size_energy_ += world.bodies[i].mass * world.gravity.norm() * extents[i].radius;
+  for (const RigidBody& b : world.bodies)
+    if (!b.is_static) floor_energy_ += b.mass * world.gravity.norm() * kLiftFloor;
 }
 
 void TargetWatch::afterStep(const World& world, const Pipeline& pipeline) {
@@ -21,7 +19,7 @@ void TargetWatch::afterStep(const World& world, const Pipeline& pipeline) {
     }
   if (target_.energy_drift <= 0) return;
   energy_.afterStep(world, pipeline.storedEnergy());
-  const double in_play = std::max(energy_.scale(), size_energy_);
+  const double in_play = std::max(energy_.scale(), floor_energy_);
   // Nothing in play (nothing moves, nothing falls): nothing can rise by a share of it.
   if (in_play <= 0) return;
   const double share = energy_.rise() / in_play;

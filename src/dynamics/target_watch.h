@@ -14,6 +14,10 @@
 
 namespace tumble {
 
+// m: the lift whose energy is the least the energy in play is taken to be. A millimetre is the
+// smallest motion a render shows; a rise below what it takes is below anything a viewer sees.
+inline constexpr double kLiftFloor = 1e-3;
+
 class TargetWatch {
  public:
   // `energy_repaid_within`: steps within which the running model pays energy back (fault_check.h).
@@ -23,9 +27,9 @@ class TargetWatch {
 
   struct Worst {
     // m for the depth; for the rise, a share of the energy in play: the largest kinetic energy plus
-    // the range of potential energy seen, and at least what lifting every moving body by its own
-    // radius takes (so that a stack at rest, with next to nothing in play, is not measured
-    // against rounding)
+    // the range of potential energy seen (the fault check's scale), and at least what lifting every
+    // moving body by kLiftFloor takes (so that a stack at rest, with next to nothing in play, is
+    // not measured against rounding)
     double value = 0;
     double time = 0;     // s
     std::string where;   // "\"a\" and \"b\"", or the body that gained most; empty if nothing
@@ -48,7 +52,7 @@ class TargetWatch {
  private:
   AccuracyTarget target_;
   EnergyCheck energy_;
-  double size_energy_ = 0;   // J: what lifting every moving body by its own radius takes
+  double floor_energy_ = 0;   // J: what lifting every moving body by kLiftFloor takes
   Worst deepest_, rise_;
 };
 
