@@ -4,6 +4,8 @@
 // Compare Jolt's PhysicsSettings and MuJoCo's mjOption.
 #pragma once
 
+#include <cstddef>
+
 namespace tumble {
 
 enum class Integrator { SemiImplicitEuler, Rk4 };
@@ -22,6 +24,31 @@ enum class ContactModel { Baraff, TimeStepping, Penalty, Auto };
 // review", Multibody System Dynamics, 2022, presents them.
 enum class NormalForceLaw { Hooke, KelvinVoigt, Hertz, HuntCrossley, LankaraniNikravesh, Flores };
 enum class FrictionLaw { Coulomb, Threlfall, BengisuAkay, Ambrosio };
+
+// Each law with its name in a scene file, once: the loader reads these names and `tumble check`,
+// the refusal message and the tests print them.
+template <typename Law> struct LawName {
+  Law law;
+  const char* name;
+};
+inline constexpr LawName<NormalForceLaw> kNormalForceLawNames[] = {
+    {NormalForceLaw::Hooke, "hooke"},
+    {NormalForceLaw::KelvinVoigt, "kelvin_voigt"},
+    {NormalForceLaw::Hertz, "hertz"},
+    {NormalForceLaw::HuntCrossley, "hunt_crossley"},
+    {NormalForceLaw::LankaraniNikravesh, "lankarani_nikravesh"},
+    {NormalForceLaw::Flores, "flores"}};
+inline constexpr LawName<FrictionLaw> kFrictionLawNames[] = {{FrictionLaw::Coulomb, "coulomb"},
+                                                             {FrictionLaw::Threlfall, "threlfall"},
+                                                             {FrictionLaw::BengisuAkay, "bengisu_akay"},
+                                                             {FrictionLaw::Ambrosio, "ambrosio"}};
+template <typename Law, std::size_t N> constexpr const char* nameOf(Law law, const LawName<Law> (&names)[N]) {
+  for (const LawName<Law>& n : names)
+    if (n.law == law) return n.name;
+  return "?";
+}
+inline constexpr const char* nameOf(NormalForceLaw law) { return nameOf(law, kNormalForceLawNames); }
+inline constexpr const char* nameOf(FrictionLaw law) { return nameOf(law, kFrictionLawNames); }
 
 struct PenaltySettings {
   NormalForceLaw law = NormalForceLaw::HuntCrossley;

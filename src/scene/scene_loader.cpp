@@ -55,18 +55,23 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   in.rejectUnknownKeys();
 }
 
+// A law named by its scene-file name (settings.h's table), with "did you mean" for a near miss;
+// returns the name read.
+template <typename Law, std::size_t N>
+std::string readLaw(ObjectReader& in, const std::string& key, Law fallback, const LawName<Law> (&names)[N], Law& out) {
+  std::vector<std::string> choices;
+  for (const LawName<Law>& n : names) choices.push_back(n.name);
+  const std::string name = readChoice(in, key, nameOf(fallback, names), choices);
+  for (const LawName<Law>& n : names)
+    if (name == n.name) out = n.law;
+  return name;
+}
+
 // The penalty model's laws and their parameters (dynamics/penalty/). A stiffness is given in the
 // unit of its law (N/m for the linear laws, N/m^1.5 for the Hertz-type ones), so a number meant
 // for the other family is refused rather than read a thousand times off.
 void readPenalty(ObjectReader& in, PenaltySettings& p) {
-  const std::string law = readChoice(in, "law", "hunt_crossley",
-                                     {"hooke", "kelvin_voigt", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores"});
-  p.law = law == "hooke"               ? NormalForceLaw::Hooke
-          : law == "kelvin_voigt"      ? NormalForceLaw::KelvinVoigt
-          : law == "hertz"             ? NormalForceLaw::Hertz
-          : law == "hunt_crossley"     ? NormalForceLaw::HuntCrossley
-          : law == "lankarani_nikravesh" ? NormalForceLaw::LankaraniNikravesh
-                                       : NormalForceLaw::Flores;
+  const std::string law = readLaw(in, "law", NormalForceLaw::HuntCrossley, kNormalForceLawNames, p.law);
   const bool linear = p.law == NormalForceLaw::Hooke || p.law == NormalForceLaw::KelvinVoigt;
   const char* right = linear ? "stiffness_n_m" : "stiffness_n_m1_5";
   const char* wrong = linear ? "stiffness_n_m1_5" : "stiffness_n_m";
@@ -74,11 +79,7 @@ void readPenalty(ObjectReader& in, PenaltySettings& p) {
     in.fail(wrong, "the " + law + " law's stiffness is \"" + right + "\" (" +
                        (linear ? "N/m: force = k overlap" : "N/m^1.5: force = K overlap^1.5") + ")");
   p.stiffness = in.number(right, 0, {0, 1e15, true, false});
-  const std::string friction = readChoice(in, "friction_law", "coulomb", {"coulomb", "threlfall", "bengisu_akay", "ambrosio"});
-  p.friction_law = friction == "coulomb"     ? FrictionLaw::Coulomb
-                   : friction == "threlfall" ? FrictionLaw::Threlfall
-                   : friction == "bengisu_akay" ? FrictionLaw::BengisuAkay
-                                              : FrictionLaw::Ambrosio;
+  readLaw(in, "friction_law", FrictionLaw::Coulomb, kFrictionLawNames, p.friction_law);
   p.ramp_speed_m_s = in.number("ramp_speed_m_s", p.ramp_speed_m_s, {0, 100, true, false});
   p.ambrosio_dead_speed_m_s = in.number("dead_speed_m_s", p.ambrosio_dead_speed_m_s, {0, 100, false, false});
   if (p.friction_law == FrictionLaw::Ambrosio && p.ambrosio_dead_speed_m_s >= p.ramp_speed_m_s)

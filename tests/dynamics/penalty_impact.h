@@ -9,16 +9,9 @@
 
 namespace tumble::test {
 
-struct NamedLaw {
-  NormalForceLaw law;
-  const char* name;   // as a scene file names it
-};
-inline constexpr NamedLaw kNormalLaws[] = {{NormalForceLaw::Hooke, "hooke"},
-                                           {NormalForceLaw::KelvinVoigt, "kelvin_voigt"},
-                                           {NormalForceLaw::Hertz, "hertz"},
-                                           {NormalForceLaw::HuntCrossley, "hunt_crossley"},
-                                           {NormalForceLaw::LankaraniNikravesh, "lankarani_nikravesh"},
-                                           {NormalForceLaw::Flores, "flores"}};
+// Every law with its scene-file name (settings.h).
+using NamedLaw = LawName<NormalForceLaw>;
+inline constexpr const auto& kNormalLaws = kNormalForceLawNames;
 // hooke and hertz: no damper, every contact gives back its closing speed.
 inline bool isElastic(NormalForceLaw law) { return law == NormalForceLaw::Hooke || law == NormalForceLaw::Hertz; }
 

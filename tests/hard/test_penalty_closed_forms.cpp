@@ -173,7 +173,7 @@ TEST_CASE("penalty: a ball resting under its weight sinks to m g = K delta^n", "
     auto run = hard::simulate(std::move(w), penalty(law, 1.0 / 240), 2.0);
     const double depth = radius - run.world.bodies[1].x.z();
     std::printf("penalty static penetration (%s): %.9g m, closed form %.9g m\n",
-                law == NormalForceLaw::HuntCrossley ? "hunt_crossley" : "kelvin_voigt", depth, closed);
+                nameOf(law), depth, closed);
     CHECK(std::abs(depth - closed) <= 1e-6 * closed);
   }
 }

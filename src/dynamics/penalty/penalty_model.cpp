@@ -42,28 +42,6 @@ double inverseMassTangent(const RigidBody& b, const Eigen::Vector3d& point) {
   return b.inv_mass + (point - b.x).squaredNorm() * b.inv_inertia_body.maxCoeff();
 }
 
-const char* lawName(NormalForceLaw law) {
-  switch (law) {
-    case NormalForceLaw::Hooke: return "hooke";
-    case NormalForceLaw::KelvinVoigt: return "kelvin_voigt";
-    case NormalForceLaw::Hertz: return "hertz";
-    case NormalForceLaw::HuntCrossley: return "hunt_crossley";
-    case NormalForceLaw::LankaraniNikravesh: return "lankarani_nikravesh";
-    case NormalForceLaw::Flores: return "flores";
-  }
-  return "?";
-}
-
-const char* frictionName(FrictionLaw law) {
-  switch (law) {
-    case FrictionLaw::Coulomb: return "coulomb";
-    case FrictionLaw::Threlfall: return "threlfall";
-    case FrictionLaw::BengisuAkay: return "bengisu_akay";
-    case FrictionLaw::Ambrosio: return "ambrosio";
-  }
-  return "?";
-}
-
 // The overlap a Hertz-type spring reaches from overlap δ closing at `rate`, with the weight of
 // its point's effective mass W = m_eff |g| pressing on: its stiffest moment in this impact. The
 // energy balance K δp^(n+1)/(n+1) - W δp = ½ m_eff v² + K δ^(n+1)/(n+1) - W δ, its larger root.
@@ -301,7 +279,7 @@ void PenaltyModel::refuse(const World& world, const StepSettings& settings, doub
                 "effective mass %.4g kg) needs sub-steps of %.3g s, more than max_substeps = %d per step of "
                 "%.4g s; the largest stable step for it is %.3g s: lower the stiffness (or Young's modulus), "
                 "raise \"max_substeps\" or use a smaller dt_s",
-                world.bodies[s.a].name.c_str(), world.bodies[s.b].name.c_str(), lawName(settings.penalty.law),
+                world.bodies[s.a].name.c_str(), world.bodies[s.b].name.c_str(), nameOf(settings.penalty.law),
                 s.law.stiffness, s.law.exponent == 1 ? "N/m" : "N/m^1.5", 1 / s.inverse_mass, needed,
                 settings.penalty.max_substeps, settings.dt, needed);
   std::string message = text;
@@ -310,7 +288,7 @@ void PenaltyModel::refuse(const World& world, const StepSettings& settings, doub
   const double e = combineRestitution(world.bodies[s.a].restitution, world.bodies[s.b].restitution);
   if ((settings.penalty.law == NormalForceLaw::Flores || settings.penalty.law == NormalForceLaw::KelvinVoigt) && e < 0.1)
     message += "; the pair's restitution " + std::to_string(e).substr(0, 4) + " makes the " +
-               lawName(settings.penalty.law) + " law's damping extreme (it cannot reach e = 0): raise the "
+               nameOf(settings.penalty.law) + " law's damping extreme (it cannot reach e = 0): raise the "
                "restitution or use hunt_crossley";
   throw Error(ExitCode::Software, message);
 }
@@ -417,10 +395,10 @@ std::vector<std::string> PenaltyModel::describe(const StepSettings& settings, co
                     "within how far bodies can close in a step");
     std::snprintf(line, sizeof line,
                   "collide     penalty: %s normal force law, stiffness %s; %s friction (ramp speed %g m/s)",
-                  lawName(p.law),
+                  nameOf(p.law),
                   p.stiffness > 0 ? (std::to_string(p.stiffness) + (lawIsLinear(p.law) ? " N/m" : " N/m^1.5")).c_str()
                                   : "from Young's modulus and Poisson's ratio",
-                  frictionName(p.friction_law), p.ramp_speed_m_s);
+                  nameOf(p.friction_law), p.ramp_speed_m_s);
     lines.push_back(line);
     if (p.law == NormalForceLaw::Hooke || p.law == NormalForceLaw::Hertz)
       lines.push_back("            (an elastic law: every contact bounces back with e = 1, whatever the bodies' restitution)");
