@@ -144,6 +144,16 @@ void ContactDetector::pairContacts(const World& world, const PiecePair& pair, do
   if (found) addPairContacts(world, pair, manifold_, out, nullptr);
 }
 
+ContactDetector::Overlap ContactDetector::deepestOverlap(const World& world) {
+  ContactSettings overlapping;
+  overlapping.margin_m = 0;
+  detect(world, overlapping, overlaps_);
+  Overlap deepest;
+  for (const Contact& c : overlaps_)
+    if (c.depth > deepest.depth) deepest = {c.depth, c.a, c.b};
+  return deepest;
+}
+
 double ContactDetector::maxDepth(const World& world, const std::vector<PiecePair>& pairs) {
   double deepest = -std::numeric_limits<double>::infinity();
   for (const PiecePair& pair : pairs) {

@@ -37,6 +37,13 @@ class ContactDetector {
   // The largest penetration depth among the given piece pairs in the world's current state
   // (negative when all are separated): what bisection evaluates.
   double maxDepth(const World& world, const std::vector<PiecePair>& pairs);
+  // The deepest overlap of any two pieces in the world's current state, from its own detection
+  // with no margin (whatever contacts a model holds): depth 0 and bodies -1 when nothing overlaps.
+  struct Overlap {
+    double depth = 0;
+    int a = -1, b = -1;
+  };
+  Overlap deepestOverlap(const World& world);
   // The contact points of one pair in the world's current state (pairs closer than margin_m),
   // appended to `out`: what back-stepping watches when a touching pair lands a new corner.
   void pairContacts(const World& world, const PiecePair& pair, double margin_m, std::vector<Contact>& out);
@@ -73,6 +80,7 @@ class ContactDetector {
   double thinnestPiece() const { return thinnest_; }
 
  private:
+  std::vector<Contact> overlaps_;   // scratch of deepestOverlap
   struct Piece {
     int body;
     const ConvexPiece* shape;

@@ -7,16 +7,17 @@
 namespace tumble {
 
 TargetWatch::TargetWatch(const World& world, const AccuracyTarget& target, int energy_repaid_within)
-    : target_(target), energy_(world, 0, 0, energy_repaid_within) {
+    : target_(target), energy_(world, 0, 0, energy_repaid_within), detector_(world) {
   for (const RigidBody& b : world.bodies)
     if (!b.is_static) floor_energy_ += b.mass * world.gravity.norm() * kLiftFloor;
 }
 
 void TargetWatch::afterStep(const World& world, const Pipeline& pipeline) {
-  for (const Contact& c : pipeline.contacts())
-    if (c.depth > deepest_.value) {
-      deepest_ = {c.depth, world.time, "\"" + world.bodies[c.a].name + "\" and \"" + world.bodies[c.b].name + "\""};
-    }
+  if (target_.penetration_m > 0) {
+    const ContactDetector::Overlap o = detector_.deepestOverlap(world);
+    if (o.depth > deepest_.value)
+      deepest_ = {o.depth, world.time, "\"" + world.bodies[o.a].name + "\" and \"" + world.bodies[o.b].name + "\""};
+  }
   if (target_.energy_drift <= 0) return;
   energy_.afterStep(world, pipeline.storedEnergy());
   const double in_play = std::max(energy_.scale(), floor_energy_);

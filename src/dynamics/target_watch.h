@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/contact_detection.h"
 #include "dynamics/energy_check.h"
 #include "dynamics/pipeline.h"
 #include "dynamics/settings.h"
@@ -52,6 +53,7 @@ class TargetWatch {
  private:
   AccuracyTarget target_;
   EnergyCheck energy_;
+  ContactDetector detector_;   // its own: the end state's overlaps, whatever contacts the model holds
   double floor_energy_ = 0;   // J: what lifting every moving body by kLiftFloor takes
   Worst deepest_, rise_;
 };

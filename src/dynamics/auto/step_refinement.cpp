@@ -7,17 +7,6 @@ namespace tumble {
 
 StepRefinement::StepRefinement(const World& world, double target_m) : target_m_(target_m), detector_(world) {}
 
-// Overlapping pieces only (no margin): the geometric depth the target is about, from the bodies'
-// poses, whatever the model's own contacts say.
-double StepRefinement::deepestOverlap(const World& world) {
-  ContactSettings overlapping;
-  overlapping.margin_m = 0;
-  detector_.detect(world, overlapping, found_);
-  double deepest = 0;
-  for (const Contact& c : found_) deepest = std::max(deepest, c.depth);
-  return deepest;
-}
-
 void StepRefinement::step(World& world, const StepSettings& settings, SharedStages& shared, ContactModelStep& model) {
   const double start = world.time;
   StepSettings sub = settings;
@@ -28,7 +17,7 @@ void StepRefinement::step(World& world, const StepSettings& settings, SharedStag
       world.time = start + i * sub.dt;
       model.step(world, sub, shared);
     }
-    const double deepest = deepestOverlap(world);
+    const double deepest = detector_.deepestOverlap(world).depth;
     if (deepest <= target_m_ || level_ >= kMaxRefinement) {
       if (deepest > target_m_) ++counters_.missed_steps;
       calm_ = deepest <= 0.5 * target_m_ ? calm_ + 1 : 0;

@@ -7,8 +7,9 @@
 //
 // Why the step: both models' overlaps shrink with it. Time stepping closes a landing in one
 // velocity-level solve, left short by its few sweeps, so a landing at speed v ends about a
-// fraction of v dt deep (the 100-piece pile, deepest at a step's end: 6.4 mm at dt = 1/240 s,
-// 2.2 mm at 1/480, 0.87 mm at 1/960, 0.52 mm at 1/1920; measured 2026-11-25); the Baraff model
+// fraction of v dt deep (the 100-piece pile, deepest overlap at a step's end over its first
+// second: 15 mm at dt = 1/240 s, 6.2 mm at 1/480, 2.4 mm at 1/960, 1.6 mm at 1/1920; measured
+// 2026-11-25); the Baraff model
 // keeps contacts within its tolerance except where a pair is already deep when a sub-step begins,
 // which a shorter step makes rarer. Taking a step back is cheap: the bodies' states, and the
 // contacts detected again. A taken-back attempt leaves only warm starts behind (a solver's
@@ -47,12 +48,9 @@ class StepRefinement {
   std::string summary() const;
 
  private:
-  double deepestOverlap(const World& world);
-
   double target_m_;
   ContactDetector detector_;
   BodySnapshot snapshot_;
-  std::vector<Contact> found_;
   int level_ = 1, calm_ = 0;
   Counters counters_;
 };
