@@ -41,8 +41,13 @@ void printBodies(const Scene& scene, const World& world) {
     std::snprintf(com, sizeof com, "(%.4g, %.4g, %.4g)", b.x.x(), b.x.y(), b.x.z());
     std::printf("  %-16s %-8s %6zu %10s  %-32s %s%s\n", b.name.c_str(), shapeName(b.shape),
                 b.pieces.size(), mass, inertia, com, b.is_static ? "  static" : "");
-    if (scene.bodies[i].shape == ShapeKind::Mesh)
-      std::printf("  %-16s mesh %s\n", "", scene.bodies[i].mesh.string().c_str());
+    if (scene.bodies[i].shape == ShapeKind::Mesh) {
+      // What the picture shows of it: the file as it is, or the convex pieces that collide.
+      const bool hulls = scene.bodies[i].draw.value_or(scene.render.draw) == BodyDraw::Hulls;
+      std::printf("  %-16s mesh %s, drawn %s%s\n", "", scene.bodies[i].mesh.string().c_str(),
+                  hulls ? "as its collision hulls" : "as the file holds it",
+                  !hulls && scene.bodies[i].colour_given ? " in the scene's colour" : "");
+    }
   }
 }
 

@@ -126,6 +126,8 @@ int run(const RenderOptions& o) {
   PhaseTimes times;
   SimulationPlan plan{built.step, scene.simulation.steps_per_frame, frames.back(), o.scene.keep_going};
   SceneDrawing drawing = prepareDrawing(scene, built.world);
+  for (const std::string& w : drawing.warnings)
+    if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
   Simulator simulator(std::move(built.world), plan);
   Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
   auto start = std::chrono::steady_clock::now();
@@ -145,8 +147,7 @@ int run(const RenderOptions& o) {
   config.shadow_map_size = scene.render.shadow_map_size;
   config.shader_dir = o.shaders;
   std::unique_ptr<Renderer> renderer = Renderer::create(config);
-  std::vector<int> mesh_ids;
-  for (const DrawMesh& m : drawing.meshes) mesh_ids.push_back(renderer->addMesh(m));
+  std::vector<int> mesh_ids = uploadDrawing(*renderer, drawing);
 
   Progress progress("render", static_cast<int>(frames.size()), !o.scene.quiet);
   RgbImage image;

@@ -29,6 +29,10 @@ struct PieceSpec {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
+// What the renderer shows of a body: its visual mesh (for a mesh body, the file's meshes with their
+// materials; for the built-in shapes, the shape) or its convex collision pieces, for teaching.
+enum class BodyDraw { Visual, Hulls };
+
 struct BodySpec {
   std::string name;
   ShapeKind shape = ShapeKind::Box;
@@ -56,6 +60,9 @@ struct BodySpec {
   double youngs_modulus_pa = 1e8;                      // Pa, > 0 (the penalty model's stiffness)
   double poisson_ratio = 0.3;                          // (-1, 0.5)
   Eigen::Vector3d colour_srgb{0.8, 0.45, 0.2};         // 0..1, as a colour picker shows it
+  bool colour_given = false;                           // the scene set it: it replaces a mesh file's
+                                                       // colours and textures
+  std::optional<BodyDraw> draw;                        // unset: the render section's default
 };
 
 struct CameraSpec {
@@ -87,6 +94,7 @@ struct RenderSpec {
   int shadow_map_size = 2048;                          // texels per side
   Eigen::Vector3d background_srgb{0.80, 0.86, 0.93};
   int crf = 23;                                        // H.264 quality
+  BodyDraw draw = BodyDraw::Visual;                    // for bodies that do not say
 };
 
 // The simulation's settings are dynamics/settings.h's, filled straight from the file; a scene

@@ -52,6 +52,7 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   if (in.has("background") && in.has("background_color"))
     in.fail("background_color", "give \"background\" or \"background_color\", not both");
   r.background_srgb = in.colour("background", in.colour("background_color", r.background_srgb));
+  r.draw = readBodyDraw(in, r.draw);
   in.rejectUnknownKeys();
 }
 

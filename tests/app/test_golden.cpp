@@ -70,6 +70,18 @@ TEST_CASE("renders match the golden frames at the golden tolerance", "[golden]")
   CHECK_THAT(cube.output, Catch::Contains("3 frames compared, 0 failed"));
 }
 
+TEST_CASE("meshes drawn as their files hold them match their golden frames", "[golden][visual]") {
+  // A textured glTF, an OBJ coloured by its MTL (Kd and a map_Kd file) and a torus whose hole
+  // shows the ground: the same scenes and frames tools/update-golden renders.
+  fs::path dir = freshDir("visual");
+  for (const char* name : {"visual_textured_gltf", "visual_mtl_obj", "visual_torus"}) {
+    auto r = runTumble("render " + kSource + "/tests/scenes/" + name + ".json --size 160x120 --samples 4 --frames 1,5 -y -o " +
+                       (dir / name).string() + "/ --check-against " + kSource + "/tests/golden/" + name + kTolerance);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.output, Catch::Contains("2 frames compared, 0 failed"));
+  }
+}
+
 TEST_CASE("the same frame rendered by two processes is bit-identical", "[golden]") {
   fs::path dir = freshDir("twice");
   REQUIRE(runTumble("render " + kScene + kRender + (dir / "a/").string()).exit_code == 0);
