@@ -51,6 +51,24 @@ void printBodies(const Scene& scene, const World& world) {
   }
 }
 
+const char* formName(CameraSpec::Form form) {
+  switch (form) {
+    case CameraSpec::Form::Fixed: return "fixed";
+    case CameraSpec::Form::Orbit: return "orbit";
+    case CameraSpec::Form::Follow: return "follow";
+    case CameraSpec::Form::Fit: return "fit";
+  }
+  return "?";
+}
+
+// The default camera's form, and the named ones --camera picks from.
+void printCameras(const Scene& scene) {
+  std::printf("camera    %s", formName(scene.camera.form));
+  if (!scene.camera.follow_body.empty()) std::printf(" \"%s\"", scene.camera.follow_body.c_str());
+  std::printf("\n");
+  for (const CameraSpec& c : scene.cameras) std::printf("  --camera %-16s %s\n", c.name.c_str(), formName(c.form));
+}
+
 int run(const SceneOptions& o) {
   Scene scene = loadSceneWithOverrides(o);
   BuiltWorld built = buildWorld(scene);
@@ -65,6 +83,7 @@ int run(const SceneOptions& o) {
   std::printf("render    %dx%d, %d fps, %d frames (%.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
               r.width, r.height, r.fps, r.frames, r.frames / double(r.fps), r.samples, r.shadow_map_size,
               scene.lighting.directional.size());
+  printCameras(scene);
   std::printf("output    %s\n", scene.output.value_or("out/" + scene.name + ".mp4").c_str());
   return 0;
 }

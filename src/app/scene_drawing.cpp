@@ -39,22 +39,6 @@ DrawMesh meshOf(const RigidBody& body, int subdivisions) {
   return mesh;
 }
 
-DrawCamera cameraOf(const CameraSpec& spec) {
-  DrawCamera cam;
-  cam.eye = spec.position_m.cast<float>();
-  if (spec.orientation) {
-    // The camera looks along its own -z with +y up (the OpenGL and Blender camera convention).
-    Eigen::Matrix3d R = spec.orientation->toRotationMatrix();
-    cam.target = (spec.position_m - R.col(2)).cast<float>();
-    cam.up = R.col(1).cast<float>();
-  } else {
-    cam.target = spec.look_at_m->cast<float>();
-    cam.up = spec.up.normalized().cast<float>();
-  }
-  cam.fov_y_deg = static_cast<float>(spec.fov_y_deg);
-  return cam;
-}
-
 }  // namespace
 
 Eigen::Vector3f srgbToLinear(const Eigen::Vector3d& srgb) {
@@ -68,7 +52,6 @@ Eigen::Vector3f srgbToLinear(const Eigen::Vector3d& srgb) {
 
 SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
   SceneDrawing d;
-  d.frame.camera = cameraOf(scene.camera);
   for (const DirectionalLightSpec& l : scene.lighting.directional) {
     DirectionalLight light;
     light.direction = l.direction.normalized().cast<float>();
@@ -105,6 +88,18 @@ SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
       d.frame.instances.push_back(inst);
     }
   return d;
+}
+
+std::vector<double> bodyRadii(const SceneDrawing& d) {
+  std::vector<double> radii;
+  for (const std::vector<DrawnPart>& parts : d.parts_of_body) {
+    double r = 0;
+    for (const DrawnPart& part : parts)
+      for (const Eigen::Vector3f& p : d.meshes[static_cast<std::size_t>(part.mesh)].positions)
+        r = std::max(r, static_cast<double>(p.norm()));
+    radii.push_back(r);
+  }
+  return radii;
 }
 
 std::vector<int> uploadDrawing(Renderer& renderer, const SceneDrawing& d) {

@@ -31,7 +31,7 @@ struct SceneDrawing {
   std::vector<DrawMesh> meshes;      // DrawMesh::texture indexes `textures`
   std::vector<DrawTexture> textures;
   std::vector<std::vector<DrawnPart>> parts_of_body;   // per body; empty for the ground
-  DrawFrame frame;                   // camera, lights, ground; instances filled per frame
+  DrawFrame frame;                   // lights, ground; camera and instances set per frame
   std::vector<std::string> warnings; // e.g. a texture that could not be decoded
   // Meshes and textures already made, so that a pile of the same mesh file shares them (and is
   // drawn instanced): by mesh file and scale, and by texture label.
@@ -39,7 +39,10 @@ struct SceneDrawing {
   std::map<std::string, int> texture_of_label;
 };
 
+// The camera is left at its default: the app sets it per frame (camera_rig.h).
 SceneDrawing prepareDrawing(const Scene& scene, const World& world);
+// Per body, the radius about its centre of mass that holds its drawn meshes; 0 for the ground.
+std::vector<double> bodyRadii(const SceneDrawing& drawing);
 // Uploads the textures and meshes; returns the renderer's index of each of drawing.meshes.
 std::vector<int> uploadDrawing(Renderer& renderer, const SceneDrawing& drawing);
 // Fills drawing.frame.instances from one frame of samples (rigid transform x + R(q) p).

@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "scene/body_reader.h"
+#include "scene/camera_reader.h"
 #include "scene/object_reader.h"
 
 namespace tumble {
@@ -168,26 +169,6 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
   in.rejectUnknownKeys();
 }
 
-void readCamera(ObjectReader& in, CameraSpec& cam) {
-  cam.position_m = in.vector3("position_m", cam.position_m);
-  bool has_look = in.has("look_at_m");
-  bool has_quat = in.has("quat_wxyz") || in.has("rotation_deg");
-  if (has_look && has_quat) in.fail("look_at_m", "give \"look_at_m\" or an orientation, not both");
-  if (has_quat) {
-    cam.orientation = readOrientation(in);
-    cam.look_at_m.reset();
-  } else {
-    cam.look_at_m = in.vector3("look_at_m", *cam.look_at_m);
-    if ((*cam.look_at_m - cam.position_m).norm() < 1e-9)
-      in.fail("look_at_m", "the camera cannot look at its own position");
-    readOrientation(in);  // marks the orientation keys as known
-  }
-  cam.up = in.vector3("up", cam.up, {-1e6, 1e6});
-  if (cam.up.norm() < 1e-12) in.fail("up", "the up vector cannot be zero");
-  cam.fov_y_deg = in.number("fov_y_deg", cam.fov_y_deg, {0, 180, true, true});
-  in.rejectUnknownKeys();
-}
-
 void readLights(ObjectReader& root, const nlohmann::json& list, LightingSpec& lighting,
                 const ParseContext& ctx) {
   lighting.directional.clear();
@@ -315,12 +296,13 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
     ObjectReader defaults(ctx, empty, "/simulation");
     readSimulation(defaults, scene.simulation, scene.render.fps, scene.render.frames);
   }
-  if (auto c = root.optionalObject("camera")) readCamera(*c, scene.camera);
+  readCameras(root, scene);
   if (const nlohmann::json* lights = root.optionalArray("lights")) readLights(root, *lights, scene.lighting, ctx);
   else scene.lighting.directional.assign(1, DirectionalLightSpec{});
   scene.output = root.optionalString("output");
   if (scene.output) checkSceneOutput(root, *scene.output);
   readBodies(root, ctx, scene);
+  checkCameraBodies(scene, ctx);
   root.rejectUnknownKeys();
   return scene;
 }
