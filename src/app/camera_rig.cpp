@@ -127,6 +127,16 @@ std::vector<DrawCamera> cameraPath(const CameraSpec& spec, const Trajectory& tra
   return std::vector<DrawCamera>(trajectory.frames.size(), fixedCamera(spec));
 }
 
+const char* cameraFormName(CameraSpec::Form form) {
+  switch (form) {
+    case CameraSpec::Form::Orbit: return "orbit";
+    case CameraSpec::Form::Follow: return "follow";
+    case CameraSpec::Form::Fit: return "fit";
+    case CameraSpec::Form::Fixed: break;
+  }
+  return "fixed";
+}
+
 const CameraSpec& pickCamera(const Scene& scene, const std::string& name) {
   if (name.empty()) return scene.camera;
   std::vector<std::string> names;

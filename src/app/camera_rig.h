@@ -17,6 +17,9 @@ namespace tumble {
 std::vector<DrawCamera> cameraPath(const CameraSpec& spec, const Trajectory& trajectory,
                                    const std::vector<double>& body_radius_m, double aspect);
 
+// "fixed", "orbit", "follow" or "fit", for messages and listings.
+const char* cameraFormName(CameraSpec::Form form);
+
 // The scene's camera named `name` ("" for the default); throws Error(Usage) naming the cameras
 // there are when none is.
 const CameraSpec& pickCamera(const Scene& scene, const std::string& name);

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/camera_rig.h"
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "dynamics/pipeline.h"
@@ -51,22 +52,12 @@ void printBodies(const Scene& scene, const World& world) {
   }
 }
 
-const char* formName(CameraSpec::Form form) {
-  switch (form) {
-    case CameraSpec::Form::Fixed: return "fixed";
-    case CameraSpec::Form::Orbit: return "orbit";
-    case CameraSpec::Form::Follow: return "follow";
-    case CameraSpec::Form::Fit: return "fit";
-  }
-  return "?";
-}
-
 // The default camera's form, and the named ones --camera picks from.
 void printCameras(const Scene& scene) {
-  std::printf("camera    %s", formName(scene.camera.form));
+  std::printf("camera    %s", cameraFormName(scene.camera.form));
   if (!scene.camera.follow_body.empty()) std::printf(" \"%s\"", scene.camera.follow_body.c_str());
   std::printf("\n");
-  for (const CameraSpec& c : scene.cameras) std::printf("  --camera %-16s %s\n", c.name.c_str(), formName(c.form));
+  for (const CameraSpec& c : scene.cameras) std::printf("  --camera %-16s %s\n", c.name.c_str(), cameraFormName(c.form));
 }
 
 int run(const SceneOptions& o) {

@@ -10,6 +10,7 @@
 #include "app/interrupt.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
+#include "app/render_dry_run.h"
 #include "app/scene_drawing.h"
 #include "app/scene_options.h"
 #include "base/error.h"
@@ -29,7 +30,7 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output, size, frames, shaders, camera;
   std::optional<int> start, end, crf, samples, shadow_map_size;
-  bool overwrite = false, skip_existing = false;
+  bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
   CheckOptions check;
 };
@@ -109,6 +110,10 @@ int run(const RenderOptions& o) {
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
   std::string output = !o.output.empty() ? o.output : scene.output.value_or("out/" + scene.name + ".mp4");
   OutputTarget target = parseOutput(output, static_cast<int>(frames.size()));
+  if (o.dry_run) {
+    printDryRun({scene, camera, frames, target, o.overwrite}, stdout);
+    return 0;
+  }
   resolveExisting(o, target, frames);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
@@ -237,6 +242,8 @@ std::function<int()> addRenderCommand(CLI::App& app) {
                   "built into tumble, to try shader edits without rebuilding")
       ->envname("TUMBLE_SHADER_DIR");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
+  cmd->add_flag("--dry-run", o->dry_run,
+                "Print the resolved settings, each frame's simulated time and output file; write nothing");
   cmd->add_flag("--skip-existing", o->skip_existing, "Keep PNG frames that already exist (resume)");
   cmd->add_option("--check-against", o->check_against,
                   "Compare each frame with DIR/frame_####.png; exit 0 pass, 1 fail, 2 missing or other size");
