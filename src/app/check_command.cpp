@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "dynamics/pipeline.h"
+#include "scene/scene_overrides.h"
 #include "scene/world_builder.h"
 
 namespace tumble {
@@ -71,8 +72,8 @@ int run(const SceneOptions& o) {
               scene.simulation.steps_per_frame, scene.simulation.gravity_m_s2.x(),
               scene.simulation.gravity_m_s2.y(), scene.simulation.gravity_m_s2.z());
   for (const std::string& line : Pipeline(built.world, built.step).describe(built.step)) std::printf("  %s\n", line.c_str());
-  std::printf("render    %dx%d, %d fps, %d frames (%.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
-              r.width, r.height, r.fps, r.frames, r.frames / double(r.fps), r.samples, r.shadow_map_size,
+  std::printf("render    %dx%d, %d fps, %d frames (t = 0 .. %.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
+              r.width, r.height, r.fps, r.frames, durationOfFrames(r.frames, r.fps), r.samples, r.shadow_map_size,
               scene.lighting.directional.size());
   printCameras(scene);
   std::printf("output    %s\n", scene.output.value_or("out/" + scene.name + ".mp4").c_str());

@@ -10,6 +10,7 @@
 #include "scene/body_reader.h"
 #include "scene/camera_reader.h"
 #include "scene/object_reader.h"
+#include "scene/scene_overrides.h"
 
 namespace tumble {
 namespace {
@@ -44,7 +45,7 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   r.fps = in.integer("fps", r.fps, 1, 1000);
   auto duration = in.optionalNumber("duration_s", {0, kMaxFrames / double(r.fps), true, false});
   if (duration && in.has("frames")) in.fail("frames", "give either \"duration_s\" or \"frames\", not both");
-  if (duration) r.frames = std::max(1, static_cast<int>(std::lround(*duration * r.fps)));
+  if (duration) r.frames = framesForDuration(*duration, r.fps);
   r.frames = in.integer("frames", r.frames, 1, kMaxFrames);
   r.samples = in.integer("samples", r.samples, 1, 4);
   if (r.samples == 3) in.fail("samples", "MSAA takes 1, 2 or 4 samples");
