@@ -106,7 +106,7 @@ TEST_CASE("a fit camera keeps every body of the clip inside its view at every fr
   }
 }
 
-TEST_CASE("--camera picks a named camera, or says which there are", "[camera]") {
+TEST_CASE("render picks a named camera with --camera, or says which there are", "[camera]") {
   Scene scene;
   scene.cameras.push_back(CameraSpec{});
   scene.cameras.back().name = "follow";
