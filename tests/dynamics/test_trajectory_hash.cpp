@@ -69,7 +69,9 @@ std::uint64_t simulateAndHash(const GoldenRun& run) {
   Scene scene = loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/" + run.scene + ".json");
   if (std::string(run.model) == "baraff") scene.simulation.step.model = ContactModel::Baraff;
   if (std::string(run.model) == "time_stepping") scene.simulation.step.model = ContactModel::TimeStepping;
-  setDuration(scene, run.seconds);
+  // The committed runs: seconds x fps frames, the last at (frames - 1) / fps (the frame count a
+  // duration gave when these hashes were taken; setDuration now gives one more, reaching it).
+  setFrameCount(scene, static_cast<int>(std::lround(run.seconds * scene.render.fps)));
   BuiltWorld built = buildWorld(scene);
   Simulator sim(std::move(built.world), {built.step, scene.simulation.steps_per_frame, scene.render.frames});
   TrajectoryHash hash;
