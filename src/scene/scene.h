@@ -147,6 +147,7 @@ struct Scene {
   RenderSpec render;
   SimulationSpec simulation;
   std::optional<std::string> output;                   // default -o, relative to the working dir
+  std::string resolved_json;   // the JSON read, after --set and --patch (keys sorted): what provenance hashes
 };
 
 }  // namespace tumble
