@@ -13,6 +13,7 @@
 #include "app/render_dry_run.h"
 #include "app/scene_drawing.h"
 #include "app/scene_options.h"
+#include "app/stats_file.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -32,6 +33,7 @@ struct RenderOptions {
   std::optional<int> start, end, crf, samples, shadow_map_size;
   bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
+  std::string stats;           // --stats FILE.json; empty: none
   CheckOptions check;
 };
 
@@ -99,6 +101,18 @@ std::string formatSeconds(double s) {
   return buffer;
 }
 
+nlohmann::json renderStats(const PhaseTimes& t, const Simulator& simulator, const SimulationPlan& plan,
+                           const Trajectory& trajectory, double wall, int rendered) {
+  nlohmann::json stats = simulationStats(simulator, plan, trajectory.times.back());
+  stats["command"] = "render";
+  stats["wall_s"] = wall;
+  stats["frames_rendered"] = rendered;
+  stats["phases_s"] = {{"simulate", t.simulate}, {"render", t.render}, {"read_back", t.read_back}, {"encode", t.encode}};
+  stats["per_frame_median_ms"] = {
+      {"render", medianOf(t.render_ms)}, {"read_back", medianOf(t.read_back_ms)}, {"encode", medianOf(t.encode_ms)}};
+  return stats;
+}
+
 int run(const RenderOptions& o) {
   if (!o.check_against.empty() && !std::filesystem::is_directory(o.check_against)) {
     std::fprintf(stderr, "tumble: --check-against: %s is not a folder of frames\n", o.check_against.c_str());
@@ -115,6 +129,7 @@ int run(const RenderOptions& o) {
     return 0;
   }
   resolveExisting(o, target, frames);
+  if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
     return 0;
@@ -211,6 +226,7 @@ int run(const RenderOptions& o) {
     printMedians(times, 1e3 * times.simulate / plan.frames);
     printPipelineStats(simulator.pipeline());
   }
+  if (!o.stats.empty()) writeStatsFile(o.stats, o.overwrite, renderStats(times, simulator, plan, trajectory, wall, done));
   if (interrupted) return static_cast<int>(ExitCode::Interrupted);
   if (!check) return 0;
   if (!o.scene.quiet || check->exitCode() != 0) check->printSummary("tumble render --check-against");
@@ -241,6 +257,9 @@ std::function<int()> addRenderCommand(CLI::App& app) {
                   "Read the GLSL from this folder (e.g. the source tree's shaders/) instead of the copy "
                   "built into tumble, to try shader edits without rebuilding")
       ->envname("TUMBLE_SHADER_DIR");
+  cmd->add_option("--stats", o->stats,
+                  "Write where the time went (phases, pipeline stages), step and contact counts, energy drift "
+                  "and deepest penetration as JSON to this file");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--dry-run", o->dry_run,
                 "Print the resolved settings, each frame's simulated time and output file; write nothing");

@@ -7,6 +7,7 @@
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_options.h"
+#include "app/stats_file.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -18,6 +19,7 @@ namespace {
 struct SimulateOptions {
   SceneOptions scene;
   std::string trajectory;
+  std::string stats;   // --stats FILE.json; empty: none
   bool every_step = false, overwrite = false;
 };
 
@@ -42,6 +44,7 @@ std::vector<BodySample> samplesOf(const World& world) {
 
 int run(const SimulateOptions& o) {
   Scene scene = loadSceneWithOverrides(o.scene);
+  if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
   std::unique_ptr<CsvTrajectoryWriter> csv;
   if (!o.trajectory.empty()) csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite);
   BuiltWorld built = buildWorld(scene);
@@ -79,6 +82,12 @@ int run(const SimulateOptions& o) {
                  !csv ? "" : o.trajectory == "-" ? "standard output" : o.trajectory.c_str());
   }
   if (o.scene.verbose) printPipelineStats(simulator.pipeline());
+  if (!o.stats.empty()) {
+    nlohmann::json stats = simulationStats(simulator, plan, trajectory.times.back());
+    stats["command"] = "simulate";
+    stats["wall_s"] = wall;
+    writeStatsFile(o.stats, o.overwrite, stats);
+  }
   return 0;
 }
 
@@ -92,7 +101,10 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   cmd->add_option("--trajectory", o->trajectory,
                   "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
-  cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory file");
+  cmd->add_option("--stats", o->stats,
+                  "Write where the time went, step and contact counts, energy drift and deepest penetration "
+                  "as JSON to this file");
+  cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory or stats file");
   return [o] { return run(*o); };
 }
 

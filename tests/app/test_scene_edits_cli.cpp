@@ -14,12 +14,7 @@ namespace {
 
 const std::string kScene = std::string(TUMBLE_SOURCE_DIR) + "/tests/scenes/small_box.json";
 
-fs::path freshDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("tumble_edits_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshDir(const std::string& name) { return tumble::test::freshTempDir("tumble_edits_" + name); }
 
 }  // namespace
 
