@@ -6,6 +6,7 @@
 #include "app/camera_rig.h"
 #include "app/commands.h"
 #include "app/frame_check.h"
+#include "app/frame_provenance.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
 #include "app/pipeline_stats.h"
@@ -135,7 +136,7 @@ int run(const RenderOptions& o) {
     return 0;
   }
   SinkOptions sink_options{scene.render.width, scene.render.height, scene.render.fps,
-                           scene.render.crf, o.overwrite, o.skip_existing};
+                           scene.render.crf, o.overwrite, o.skip_existing, frameProvenance(scene, o.camera)};
   std::unique_ptr<FrameSink> sink = makeFrameSink(target, sink_options);
   std::optional<CheckReport> check;
   if (!o.check_against.empty()) check.emplace(o.check.settings, false);
@@ -171,6 +172,7 @@ int run(const RenderOptions& o) {
   config.shadow_map_size = scene.render.shadow_map_size;
   config.shader_dir = o.shaders;
   std::unique_ptr<Renderer> renderer = Renderer::create(config);
+  sink->setRenderer(renderer->glRenderer());
   std::vector<int> mesh_ids = uploadDrawing(*renderer, drawing);
   const std::vector<DrawCamera> cameras =
       cameraPath(camera, trajectory, bodyRadii(drawing), double(scene.render.width) / scene.render.height);
