@@ -22,7 +22,7 @@ Provenance frameProvenance(const Scene& scene, const std::string& camera) {
   p.version = buildVersion();
   p.commit = buildCommit();
   p.scene_hash = contentHash(scene.resolved_json + settings);
-  p.frame_interval_s = 1.0 / r.fps;
+  p.frame_interval_s = s.steps_per_frame * s.step.dt;   // simulated: --time-scale shrinks it
   return p;
 }
 

@@ -122,6 +122,7 @@ struct RenderSpec {
   Eigen::Vector3d background_srgb{0.80, 0.86, 0.93};
   int crf = 23;                                        // H.264 quality
   BodyDraw draw = BodyDraw::Visual;                    // for bodies that do not say
+  double time_scale = 1;                               // simulated s per played s (--time-scale): 0.25 is 4x slow motion
 };
 
 // The simulation's settings are dynamics/settings.h's, filled straight from the file; a scene
