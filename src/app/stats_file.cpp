@@ -1,9 +1,5 @@
 #include "app/stats_file.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-
 #include "io/atomic_file.h"
 
 namespace tumble {
@@ -54,16 +50,7 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
 }
 
 void writeStatsFile(const std::filesystem::path& path, bool overwrite, const nlohmann::json& stats) {
-  const std::filesystem::path temp = temporarySibling(path, "tmp");
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << stats.dump(2) << '\n';
-    if (!out.flush()) {
-      std::filesystem::remove(temp);
-      throwCantWrite(path, std::strerror(errno));
-    }
-  }
-  commitFile(temp, path, overwrite);
+  writeFileWhole(path, stats.dump(2) + "\n", overwrite);
 }
 
 }  // namespace tumble
