@@ -266,7 +266,8 @@ std::function<int()> addRenderCommand(CLI::App& app) {
       ->envname("TUMBLE_SHADER_DIR");
   cmd->add_option("--stats", o->stats,
                   "Write where the time went (phases, pipeline stages), step and contact counts, energy drift "
-                  "and deepest penetration as JSON to this file");
+                  "and deepest penetration as JSON to this file")
+      ->type_name("FILE.json");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--dry-run", o->dry_run,
                 "Print the resolved settings, each frame's simulated time and output file; write nothing");

@@ -110,10 +110,12 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
   cmd->add_option("--stats", o->stats,
                   "Write where the time went, step and contact counts, energy drift and deepest penetration "
-                  "as JSON to this file");
+                  "as JSON to this file")
+      ->type_name("FILE.json");
   cmd->add_option("--gltf", o->gltf,
                   "Write the motion as an animated glTF 2.0 binary (.glb): a node per body with its visual mesh "
-                  "and colour, a key per frame (for Blender)");
+                  "and colour, a key per frame (for Blender)")
+      ->type_name("FILE.glb");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory, stats or glTF file");
   return [o] { return run(*o); };
 }
