@@ -13,6 +13,7 @@
 #include "base/error.h"
 #include "io/output_path.h"
 #include "io/png_file.h"
+#include "io/provenance.h"
 
 namespace tumble {
 namespace {
@@ -105,6 +106,13 @@ void comparePair(const FramePair& pair, const DiffOptions& o, CheckReport& repor
   try {
     RgbImage a = readPng(pair.a), b = readPng(pair.b);
     report.compare(pair.label, a, b, diffPathFor(pair.b, o.check.diff_out));
+    // Where the two frames came from, when that differs: another build, scene or renderer
+    // often explains a difference in the pixels.
+    std::vector<std::string> lines = provenanceDifferences(readPngText(pair.a), readPngText(pair.b));
+    if (!lines.empty() && !o.quiet) {
+      std::printf("%s: provenance differs (A | B):\n", pair.label.c_str());
+      for (const std::string& line : lines) std::printf("%s\n", line.c_str());
+    }
   } catch (const Error& e) {
     report.badInput(e.what());
   }

@@ -15,9 +15,10 @@ namespace {
 
 const char* kExitCodes = R"(Exit codes:
   0   success
-  64  bad command line (unknown flag, malformed value)
-  65  bad scene: malformed JSON, unknown field, wrong type, value out of range, unusable mesh
-  66  missing input: the scene or a mesh file does not exist or cannot be read
+  64  bad command line (unknown flag, malformed value, a --set without PATH=VALUE)
+  65  bad scene: malformed JSON, unknown field, wrong type, value out of range, unusable mesh,
+      the same in a --set value or a --patch file
+  66  missing input: the scene, a --patch file or a mesh file does not exist or cannot be read
   69  unavailable: no OpenGL (OSMesa) or no H.264 encoder (libx264)
   70  numerical failure during the simulation (NaN or infinite state)
   73  cannot create output: it exists (add -y) or the folder is not writable

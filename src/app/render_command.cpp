@@ -6,6 +6,7 @@
 #include "app/camera_rig.h"
 #include "app/commands.h"
 #include "app/frame_check.h"
+#include "app/frame_provenance.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
 #include "app/pipeline_stats.h"
@@ -13,6 +14,7 @@
 #include "app/render_dry_run.h"
 #include "app/scene_drawing.h"
 #include "app/scene_options.h"
+#include "app/stats_file.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -30,8 +32,10 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output, size, frames, shaders, camera;
   std::optional<int> start, end, crf, samples, shadow_map_size;
+  std::optional<double> time_scale;
   bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
+  std::string stats;           // --stats FILE.json; empty: none
   CheckOptions check;
 };
 
@@ -63,6 +67,7 @@ void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
   }
   if (o.crf) scene.render.crf = *o.crf;
   if (o.shadow_map_size) scene.render.shadow_map_size = *o.shadow_map_size;
+  if (o.time_scale) setTimeScale(scene, *o.time_scale);
 }
 
 // Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
@@ -99,6 +104,18 @@ std::string formatSeconds(double s) {
   return buffer;
 }
 
+nlohmann::json renderStats(const PhaseTimes& t, const Simulator& simulator, const SimulationPlan& plan,
+                           const Trajectory& trajectory, double wall, int rendered) {
+  nlohmann::json stats = simulationStats(simulator, plan, trajectory.times.back());
+  stats["command"] = "render";
+  stats["wall_s"] = wall;
+  stats["frames_rendered"] = rendered;
+  stats["phases_s"] = {{"simulate", t.simulate}, {"render", t.render}, {"read_back", t.read_back}, {"encode", t.encode}};
+  stats["per_frame_median_ms"] = {
+      {"render", medianOf(t.render_ms)}, {"read_back", medianOf(t.read_back_ms)}, {"encode", medianOf(t.encode_ms)}};
+  return stats;
+}
+
 int run(const RenderOptions& o) {
   if (!o.check_against.empty() && !std::filesystem::is_directory(o.check_against)) {
     std::fprintf(stderr, "tumble: --check-against: %s is not a folder of frames\n", o.check_against.c_str());
@@ -115,12 +132,13 @@ int run(const RenderOptions& o) {
     return 0;
   }
   resolveExisting(o, target, frames);
+  if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
     return 0;
   }
   SinkOptions sink_options{scene.render.width, scene.render.height, scene.render.fps,
-                           scene.render.crf, o.overwrite, o.skip_existing};
+                           scene.render.crf, o.overwrite, o.skip_existing, frameProvenance(scene, o.camera)};
   std::unique_ptr<FrameSink> sink = makeFrameSink(target, sink_options);
   std::optional<CheckReport> check;
   if (!o.check_against.empty()) check.emplace(o.check.settings, false);
@@ -156,6 +174,7 @@ int run(const RenderOptions& o) {
   config.shadow_map_size = scene.render.shadow_map_size;
   config.shader_dir = o.shaders;
   std::unique_ptr<Renderer> renderer = Renderer::create(config);
+  sink->setRenderer(renderer->glRenderer());
   std::vector<int> mesh_ids = uploadDrawing(*renderer, drawing);
   const std::vector<DrawCamera> cameras =
       cameraPath(camera, trajectory, bodyRadii(drawing), double(scene.render.width) / scene.render.height);
@@ -211,6 +230,7 @@ int run(const RenderOptions& o) {
     printMedians(times, 1e3 * times.simulate / plan.frames);
     printPipelineStats(simulator.pipeline());
   }
+  if (!o.stats.empty()) writeStatsFile(o.stats, o.overwrite, renderStats(times, simulator, plan, trajectory, wall, done));
   if (interrupted) return static_cast<int>(ExitCode::Interrupted);
   if (!check) return 0;
   if (!o.scene.quiet || check->exitCode() != 0) check->printSummary("tumble render --check-against");
@@ -235,12 +255,19 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("--crf", o->crf, "H.264 quality, 0 (lossless) .. 51 (worst); default 23")
       ->check(CLI::Range(0, 51));
   cmd->add_option("--samples", o->samples, "MSAA samples: 1, 2 or 4");
+  cmd->add_option("--time-scale", o->time_scale,
+                  "Slow motion: S simulated seconds per second of the clip (0.25: four times the frames per "
+                  "simulated second, each at its own instant); the step must divide the new frame interval");
   cmd->add_option("--shadow-map-size", o->shadow_map_size, "Shadow map texels per side")
       ->check(CLI::Range(256, 8192));
   cmd->add_option("--shaders", o->shaders,
                   "Read the GLSL from this folder (e.g. the source tree's shaders/) instead of the copy "
                   "built into tumble, to try shader edits without rebuilding")
       ->envname("TUMBLE_SHADER_DIR");
+  cmd->add_option("--stats", o->stats,
+                  "Write where the time went (phases, pipeline stages), step and contact counts, energy drift "
+                  "and deepest penetration as JSON to this file")
+      ->type_name("FILE.json");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--dry-run", o->dry_run,
                 "Print the resolved settings, each frame's simulated time and output file; write nothing");

@@ -13,7 +13,9 @@ void printDryRun(const DryRun& plan, std::FILE* out) {
   std::fprintf(out, "scene     %s\n", s.file.string().c_str());
   std::fprintf(out, "render    %dx%d, %d fps, %d frames in the clip, %dx MSAA, shadow map %d^2%s\n", r.width, r.height,
                r.fps, r.frames, r.samples, r.shadow_map_size, video ? (", crf " + std::to_string(r.crf)).c_str() : "");
-  std::fprintf(out, "simulate  step %.9g s, %d steps per frame\n", s.simulation.step.dt, s.simulation.steps_per_frame);
+  std::fprintf(out, "simulate  step %.9g s, %d steps per frame", s.simulation.step.dt, s.simulation.steps_per_frame);
+  if (r.time_scale != 1) std::fprintf(out, " (time scale %.6g)", r.time_scale);
+  std::fprintf(out, "\n");
   std::fprintf(out, "camera    %s%s%s%s\n", cameraFormName(plan.camera.form), plan.camera.name.empty() ? "" : " (--camera ",
                plan.camera.name.c_str(), plan.camera.name.empty() ? "" : ")");
   std::fprintf(out, "output    %s %s\n", video ? "video" : "PNG", plan.target.path.string().c_str());

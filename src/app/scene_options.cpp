@@ -10,6 +10,17 @@ namespace tumble {
 
 void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("scene", o.scene, "Scene file (JSON, schema version 1)")->required();
+  command.add_option("--patch", o.patches,
+                     "Merge this JSON patch (RFC 7386) into the scene before reading it; its \"bodies\" may be "
+                     "an object keyed by body name. Repeatable; applied in order, before any --set")
+      ->type_name("FILE.json")
+      ->allow_extra_args(false);   // one value per flag, so "--patch p.json scene.json" keeps its scene
+  command.add_option("--set", o.sets,
+                     "Set a scene value before reading it, e.g. bodies.ball.restitution=0.9, render.draw=hulls, "
+                     "lights.0.intensity=2 (list entries by name or index; the value is JSON, else a string). "
+                     "Repeatable")
+      ->type_name("PATH=VALUE")
+      ->allow_extra_args(false);
   command.add_option("--fps", o.fps, "Frames per second (overrides render.fps)");
   command.add_option("--duration", o.duration_s, "Seconds to simulate (overrides render.duration_s)");
   command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.step.dt)");
@@ -48,7 +59,10 @@ void reportTarget(const Simulator& simulator, bool quiet) {
 }
 
 Scene loadSceneWithOverrides(const SceneOptions& o) {
-  Scene scene = loadScene(o.scene);
+  std::vector<SceneEdit> edits;
+  for (const std::string& p : o.patches) edits.push_back({SceneEdit::Kind::Patch, p});
+  for (const std::string& s : o.sets) edits.push_back({SceneEdit::Kind::Set, s});
+  Scene scene = loadScene(o.scene, edits);
   if (o.fps) setFrameRate(scene, *o.fps);
   if (o.duration_s) setDuration(scene, *o.duration_s);
   if (o.dt_s) setTimeStep(scene, *o.dt_s, "--dt");

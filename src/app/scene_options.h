@@ -13,6 +13,7 @@ namespace tumble {
 
 struct SceneOptions {
   std::string scene;
+  std::vector<std::string> patches, sets;   // --patch FILE.json, --set PATH=VALUE: patches first, each in order
   std::optional<double> dt_s;
   std::string integrator;
   std::string contact_model;   // empty: the scene's

@@ -1,12 +1,15 @@
 // tumble simulate SCENE [--trajectory FILE.csv] [--every-step]
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/interrupt.h"
+#include "app/gltf_export.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_options.h"
+#include "app/stats_file.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -18,6 +21,8 @@ namespace {
 struct SimulateOptions {
   SceneOptions scene;
   std::string trajectory;
+  std::string stats;   // --stats FILE.json; empty: none
+  std::string gltf;    // --gltf FILE.glb; empty: none
   bool every_step = false, overwrite = false;
 };
 
@@ -42,6 +47,8 @@ std::vector<BodySample> samplesOf(const World& world) {
 
 int run(const SimulateOptions& o) {
   Scene scene = loadSceneWithOverrides(o.scene);
+  if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
+  if (!o.gltf.empty()) checkGltfOutput(o.gltf, o.overwrite);
   std::unique_ptr<CsvTrajectoryWriter> csv;
   if (!o.trajectory.empty()) csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite);
   BuiltWorld built = buildWorld(scene);
@@ -51,6 +58,8 @@ int run(const SimulateOptions& o) {
   for (const RigidBody& b : built.world.bodies) names.push_back(b.name);
 
   SimulationPlan plan{built.step, scene.simulation.steps_per_frame, scene.render.frames, o.scene.keep_going};
+  std::optional<SceneDrawing> drawing;   // the visual meshes, for --gltf
+  if (!o.gltf.empty()) drawing = prepareDrawing(scene, built.world);
   Simulator simulator(std::move(built.world), plan);
   Progress progress("simulate", plan.frames, !o.scene.quiet);
   auto start = std::chrono::steady_clock::now();
@@ -70,6 +79,7 @@ int run(const SimulateOptions& o) {
     for (std::size_t k = 0; k < trajectory.frames.size(); ++k)
       writeRows(*csv, trajectory.times[k], names, trajectory.frames[k]);
   if (csv) csv->close();
+  if (drawing) writeGltf(o.gltf, o.overwrite, *drawing, trajectory);
   if (!o.scene.quiet) {
     long steps = static_cast<long>(plan.frames - 1) * plan.steps_per_frame;
     double simulated = trajectory.times.back();
@@ -79,6 +89,12 @@ int run(const SimulateOptions& o) {
                  !csv ? "" : o.trajectory == "-" ? "standard output" : o.trajectory.c_str());
   }
   if (o.scene.verbose) printPipelineStats(simulator.pipeline());
+  if (!o.stats.empty()) {
+    nlohmann::json stats = simulationStats(simulator, plan, trajectory.times.back());
+    stats["command"] = "simulate";
+    stats["wall_s"] = wall;
+    writeStatsFile(o.stats, o.overwrite, stats);
+  }
   return 0;
 }
 
@@ -92,7 +108,15 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   cmd->add_option("--trajectory", o->trajectory,
                   "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
-  cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory file");
+  cmd->add_option("--stats", o->stats,
+                  "Write where the time went, step and contact counts, energy drift and deepest penetration "
+                  "as JSON to this file")
+      ->type_name("FILE.json");
+  cmd->add_option("--gltf", o->gltf,
+                  "Write the motion as an animated glTF 2.0 binary (.glb): a node per body with its visual mesh "
+                  "and colour, a key per frame (for Blender)")
+      ->type_name("FILE.glb");
+  cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory, stats or glTF file");
   return [o] { return run(*o); };
 }
 

@@ -65,6 +65,20 @@ FaultCheck::FaultCheck(const World& world, FaultSettings settings)
   }
   // The last term only keeps the limit above rounding when nothing moves and nothing falls.
   energy_limit_ = settings_.energy_growth * scale + 1e-9 * (1 + scale);
+  extremes_.energy_start_j = extremes_.energy_end_j = start_total_;
+  extremes_.scale_j = scale;
+}
+
+void FaultCheck::measure(const World& world, double stored, const std::vector<Contact>& contacts) {
+  double total = stored;
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) total += energyOf(world.bodies[i], int(i));
+  extremes_.energy_end_j = total;
+  extremes_.highest_rise_j = std::max(extremes_.highest_rise_j, total - start_total_);
+  for (const Contact& c : contacts)
+    if (c.depth > extremes_.deepest_m) {
+      extremes_.deepest_m = c.depth;
+      extremes_.deepest_time = world.time;
+    }
 }
 
 double FaultCheck::energyOf(const RigidBody& body, int index) const {
@@ -185,6 +199,7 @@ std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& p
   std::optional<Fault> f = nonFinite(world);
   if (f) return record(*f, world, step, stages);
   const double stored = pipeline.storedEnergy();
+  measure(world, stored, pipeline.contacts());
   std::optional<Fault> checks[] = {unexplainedMotion(world), runawayEnergy(world, stored),
                                    deepPenetration(world, pipeline.contacts()), energyGain(world, stored)};
   for (std::optional<Fault>& c : checks)

@@ -71,6 +71,17 @@ class FaultCheck {
   // "3 faults: 2 runaway energy (first at t = ...), ..."; empty when there were none.
   std::string summary() const;
 
+  // The worst the run came to, fault or not (--stats): measured on what the checks already see.
+  struct Extremes {
+    double deepest_m = 0;        // m: the deepest contact at the end of any step
+    double deepest_time = 0;     // s: when
+    double energy_start_j = 0;   // J: kinetic + gravitational (zero at each body's start) + stored
+    double energy_end_j = 0;     // J: the same after the last step
+    double highest_rise_j = 0;   // J: the most the total ever stood above its start
+    double scale_j = 0;          // J: the energy in play, KE0 + sum m |g| r: what a drift is a share of
+  };
+  const Extremes& extremes() const { return extremes_; }
+
  private:
   std::optional<Fault> nonFinite(const World& world) const;
   std::optional<Fault> runawayEnergy(const World& world, double stored) const;
@@ -94,6 +105,8 @@ class FaultCheck {
   double last_time_ = 0;                   // s: the world's time after the previous step
   long counts_[static_cast<int>(Fault::Kind::Count)] = {};
   std::optional<Fault> first_;
+  Extremes extremes_;
+  void measure(const World& world, double stored, const std::vector<Contact>& contacts);
 };
 
 }  // namespace tumble

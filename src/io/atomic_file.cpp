@@ -83,4 +83,19 @@ void commitFile(const fs::path& temp, const fs::path& final_path, bool overwrite
   throwCantWrite(final_path, std::strerror(err));
 }
 
+void writeFileWhole(const std::filesystem::path& path, std::string_view data, bool overwrite) {
+  const std::filesystem::path temp = temporarySibling(path, "tmp");
+  std::FILE* file = std::fopen(temp.c_str(), "wb");
+  if (!file) throwCantWrite(path, std::strerror(errno));
+  const bool written = std::fwrite(data.data(), 1, data.size(), file) == data.size();
+  // fclose reports a full disk for data still buffered, so its result counts too.
+  if (std::fclose(file) != 0 || !written) {
+    const int reason = errno;
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throwCantWrite(path, std::strerror(reason));
+  }
+  commitFile(temp, path, overwrite);
+}
+
 }  // namespace tumble

@@ -30,6 +30,10 @@ bool isStreamOutput(const std::filesystem::path& path);
 // --overwrite: a folder, a device, a pipe (a symbolic link to a regular file is replaceable).
 void checkReplaceable(const std::filesystem::path& path);
 
+// Writes `data` to a temporary sibling and commits it (commitFile): a small output made in memory
+// (a stats file, a glTF) appears whole or not at all.
+void writeFileWhole(const std::filesystem::path& path, std::string_view data, bool overwrite);
+
 // Error(CantCreate) "cannot write PATH: REASON", the one wording for unwritable outputs.
 [[noreturn]] void throwCantWrite(const std::filesystem::path& path, std::string_view reason);
 

@@ -18,6 +18,9 @@ class FrameSink {
   virtual void finish() = 0;
   // What the user should be told was written, e.g. "out/drop.mp4" or "out/drop/frame_####.png".
   virtual std::string describe() const = 0;
+  // The OpenGL renderer's name (GL_RENDERER), known once the renderer exists, for the frames'
+  // provenance; outputs that do not record it ignore it.
+  virtual void setRenderer(const std::string& /*renderer*/) {}
 };
 
 }  // namespace tumble

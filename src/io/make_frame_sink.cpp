@@ -18,13 +18,14 @@ class NullSink : public FrameSink {
 
 std::unique_ptr<FrameSink> makeFrameSink(const OutputTarget& target, const SinkOptions& options) {
   if (target.kind == OutputTarget::Kind::PngSequence) {
-    return std::make_unique<PngSequenceSink>(target, options.overwrite, options.skip_existing);
+    return std::make_unique<PngSequenceSink>(target, options.overwrite, options.skip_existing, options.provenance);
   }
   VideoSettings settings;
   settings.width = options.width;
   settings.height = options.height;
   settings.fps = options.fps;
   settings.crf = options.crf;
+  if (options.provenance) settings.metadata = videoMetadata(*options.provenance);
   return std::make_unique<VideoSink>(target, settings, options.overwrite);
 }
 

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "io/frame_sink.h"
 #include "io/output_path.h"
+#include "io/provenance.h"
 
 namespace tumble {
 
@@ -14,6 +16,7 @@ struct SinkOptions {
   int crf = 23;                     // x264 constant rate factor (video only)
   bool overwrite = false;           // replace existing outputs (-y)
   bool skip_existing = false;       // keep existing PNG frames (--skip-existing); ignored for video
+  std::optional<Provenance> provenance;   // written into every PNG, and a video's metadata
 };
 
 std::unique_ptr<FrameSink> makeFrameSink(const OutputTarget& target, const SinkOptions& options);

@@ -3,15 +3,27 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "base/image.h"
 
 namespace tumble {
 
+// A text chunk: a keyword (1..79 Latin-1 characters) and its text.
+struct PngText {
+  std::string keyword, text;
+  bool operator==(const PngText&) const = default;
+};
+
 // Writes atomically: to a temporary name in the same folder, then renamed. Throws
 // tumble::Error(CantCreate) naming the path when it cannot. With `overwrite` false an existing
 // file is never replaced (CantCreate instead), even if it appears while this frame is encoded.
-void writePng(const std::filesystem::path& path, const RgbImage& image, bool overwrite = true);
+// `text` goes in before the pixels: as tEXt when it is printable ASCII, else as UTF-8 iTXt.
+void writePng(const std::filesystem::path& path, const RgbImage& image, bool overwrite = true,
+              const std::vector<PngText>& text = {});
+// The text chunks (tEXt, zTXt, iTXt) of a PNG, in file order. Throws like readPng.
+std::vector<PngText> readPngText(const std::filesystem::path& path);
 // Throws tumble::Error(MissingInput) when absent, BadInput when not a readable PNG.
 RgbImage readPng(const std::filesystem::path& path);
 

@@ -9,8 +9,9 @@ namespace tumble {
 
 namespace fs = std::filesystem;
 
-PngSequenceSink::PngSequenceSink(const OutputTarget& target, bool overwrite, bool skip_existing)
-    : target_(target), overwrite_(overwrite), skip_existing_(skip_existing) {
+PngSequenceSink::PngSequenceSink(const OutputTarget& target, bool overwrite, bool skip_existing,
+                                 std::optional<Provenance> provenance)
+    : target_(target), overwrite_(overwrite), skip_existing_(skip_existing), provenance_(std::move(provenance)) {
   fs::path folder = target_.path.parent_path();
   std::error_code ec;
   if (!folder.empty()) fs::create_directories(folder, ec);
@@ -24,7 +25,7 @@ void PngSequenceSink::write(const RgbImage& image, int frame_number) {
     ++skipped_;
     return;
   }
-  writePng(path, image, overwrite_);
+  writePng(path, image, overwrite_, provenance_ ? frameText(*provenance_, frame_number) : std::vector<PngText>{});
   ++written_;
 }
 

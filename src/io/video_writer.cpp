@@ -134,7 +134,9 @@ void VideoWriter::Impl::openFile() {
   }
   AVDictionary* options = nullptr;
   // faststart: the index (moov) goes before the data, so browsers play while downloading.
-  if (wantsFaststart(format->oformat)) av_dict_set(&options, "movflags", "+faststart", 0);
+  // use_metadata_tags: MP4 keeps the metadata's own keys (tumble_scene_hash), not only iTunes'.
+  if (wantsFaststart(format->oformat)) av_dict_set(&options, "movflags", "+faststart+use_metadata_tags", 0);
+  for (const auto& [key, value] : settings.metadata) av_dict_set(&format->metadata, key.c_str(), value.c_str(), 0);
   int err = avformat_write_header(format.get(), &options);
   av_dict_free(&options);
   if (err < 0) fail("cannot write the container header", err);

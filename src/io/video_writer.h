@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "base/image.h"
 
@@ -19,6 +21,8 @@ struct VideoSettings {
   // run for a given count, but differ between counts: fix it (e.g. 4) for byte-identical videos
   // across machines.
   int threads = 0;
+  // Container metadata (key, value): MP4/MOV keep keys of their own as well (use_metadata_tags).
+  std::vector<std::pair<std::string, std::string>> metadata;
 };
 
 // libav and x264 print statistics and notes on stderr, which would break up the progress bar.

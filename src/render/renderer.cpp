@@ -35,6 +35,7 @@ class GlRenderer final : public Renderer {
   int addMesh(const DrawMesh& mesh) override;
   void draw(const DrawFrame& frame) override;
   void readBack(RgbImage& out) override;
+  std::string glRenderer() override;
 
  private:
   void createGround();
@@ -251,6 +252,12 @@ void GlRenderer::readBack(RgbImage& out) {
   targets_->readRgba(rgba_);
   throwIfGlError("reading the frame back");
   rgbaBottomUpToRgbTopDown(rgba_, config_.width, config_.height, out);
+}
+
+std::string GlRenderer::glRenderer() {
+  context_.makeCurrent();
+  const GLubyte* name = glGetString(GL_RENDERER);
+  return name ? reinterpret_cast<const char*>(name) : "unknown";
 }
 
 }  // namespace

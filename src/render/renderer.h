@@ -37,6 +37,9 @@ class Renderer {
   virtual void draw(const DrawFrame& frame) = 0;
   // Reads the last drawn frame back, flipped so that row 0 is the top.
   virtual void readBack(RgbImage& out) = 0;
+  // The OpenGL implementation drawing (GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"):
+  // frames from another one may differ in their last bits, so provenance records it.
+  virtual std::string glRenderer() = 0;
 };
 
 }  // namespace tumble

@@ -5,12 +5,14 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "scene/scene_patch.h"
 #include "scene/suggest.h"
 
 namespace tumble {
 
 void failAt(const ParseContext& ctx, const std::string& pointer, const std::string& message,
             bool at_key) {
+  if (ctx.edits) failInEdit(*ctx.edits, pointer, message, at_key);   // returns if no edit wrote it
   TextPosition pos = ctx.locations ? ctx.locations->find(pointer, at_key) : TextPosition{};
   std::string where = ctx.file;
   if (pos.line > 0) where += ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);

@@ -14,12 +14,16 @@
 
 namespace tumble {
 
+struct EditOrigin;
+
 struct ParseContext {
   std::string file;               // as the user wrote it, for messages
   const JsonLocations* locations;
+  const std::vector<EditOrigin>* edits = nullptr;   // values --set and --patch wrote
 };
 
-// Throws tumble::Error(BadInput) "file:line:col: pointer: message".
+// Throws tumble::Error(BadInput) "file:line:col: pointer: message"; for a value an edit wrote,
+// "--set a.b.c: message" or "patch.json:line:col: pointer: message".
 [[noreturn]] void failAt(const ParseContext& ctx, const std::string& pointer,
                          const std::string& message, bool at_key = false);
 

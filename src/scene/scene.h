@@ -122,6 +122,7 @@ struct RenderSpec {
   Eigen::Vector3d background_srgb{0.80, 0.86, 0.93};
   int crf = 23;                                        // H.264 quality
   BodyDraw draw = BodyDraw::Visual;                    // for bodies that do not say
+  double time_scale = 1;                               // simulated s per played s (--time-scale): 0.25 is 4x slow motion
 };
 
 // The simulation's settings are dynamics/settings.h's, filled straight from the file; a scene
@@ -147,6 +148,7 @@ struct Scene {
   RenderSpec render;
   SimulationSpec simulation;
   std::optional<std::string> output;                   // default -o, relative to the working dir
+  std::string resolved_json;   // the JSON read, after --set and --patch (keys sorted): what provenance hashes
 };
 
 }  // namespace tumble

@@ -1,14 +1,13 @@
 #include "scene/scene_loader.h"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include "base/error.h"
 #include "scene/body_reader.h"
 #include "scene/camera_reader.h"
+#include "scene/json_text.h"
 #include "scene/object_reader.h"
 #include "scene/scene_overrides.h"
 
@@ -18,7 +17,6 @@ namespace {
 // Refused before any work: a frame this large or a clip this long is a typo, not a request.
 constexpr int kMaxSide = 8192;
 constexpr int kMaxFrames = 1000000;
-constexpr std::uintmax_t kMaxSceneBytes = 64 << 20;   // 64 MB: a 100000-body pile is ~15 MB
 // Steps in a whole run: 1e8 steps at 1/240 s is 116 hours of simulated time. More is a typo in
 // dt_s or the frame count, and would look like a hang.
 constexpr double kMaxSteps = 1e8;
@@ -213,73 +211,19 @@ void readBodies(ObjectReader& root, const ParseContext& ctx, Scene& scene) {
   }
 }
 
-std::string readFile(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec))
-    throw Error(ExitCode::MissingInput, file.string() + ": no such scene file");
-  if (std::filesystem::is_directory(file, ec))
-    throw Error(ExitCode::MissingInput, file.string() + ": is a folder, not a scene file");
-  // A device or a pipe (/dev/zero) would be read forever; a hand-written scene is never this big.
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw Error(ExitCode::MissingInput, file.string() + ": is not a regular file");
-  if (std::filesystem::file_size(file, ec) > kMaxSceneBytes)
-    throw Error(ExitCode::BadInput, file.string() + ": " + std::to_string(std::filesystem::file_size(file, ec) >> 20) +
-                                        " MB is too large for a scene file (at most " +
-                                        std::to_string(kMaxSceneBytes >> 20) + " MB)");
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  if (!(in && text << in.rdbuf()))
-    throw Error(ExitCode::MissingInput, file.string() + ": cannot be read");
-  return text.str();
-}
-
-// nlohmann's messages begin "[json.exception.parse_error.101] parse error at line 3, column 4: ";
-// we keep what follows and put the position in our own "file:line:column:" form.
-std::string describeJsonError(const nlohmann::json::exception& e, const std::string& text,
-                              const JsonLocations& locations, const std::filesystem::path& file) {
-  std::string what = e.what();
-  TextPosition pos{};
-  if (auto* parse = dynamic_cast<const nlohmann::json::parse_error*>(&e)) {
-    pos = locations.positionOf(parse->byte > 0 ? parse->byte - 1 : 0);
-  } else if (std::size_t q = what.find('\''); q != std::string::npos) {
-    // "number overflow parsing '1e999'": find the number in the text to say where it is.
-    // The first value spelled so, not the first text: the same digits may sit in a comment.
-    std::string token = what.substr(q + 1, what.rfind('\'') - q - 1);
-    std::size_t at = locations.firstValueSpelled(token);
-    if (at == std::string::npos) at = text.find(token);
-    if (at != std::string::npos) pos = locations.positionOf(at);
-  }
-  std::size_t colon = what.find(": ", what.find("parse error"));
-  std::string detail = colon != std::string::npos && what.find("parse error") != std::string::npos
-                           ? what.substr(colon + 2)
-                           : what.substr(what.find(']') + 2);
-  std::string where = file.string();
-  if (pos.line > 0) where += ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
-  return where + ": invalid JSON: " + detail;
-}
-
 }  // namespace
 
-Scene loadScene(const std::filesystem::path& file) { return parseScene(readFile(file), file); }
+Scene loadScene(const std::filesystem::path& file, const std::vector<SceneEdit>& edits) {
+  return parseScene(readJsonFile(file, "scene file"), file, edits);
+}
 
-Scene parseScene(const std::string& text, const std::filesystem::path& file) {
+Scene parseScene(const std::string& text, const std::filesystem::path& file, const std::vector<SceneEdit>& edits) {
   JsonLocations locations(text);
-  ParseContext ctx{file.string(), &locations};
-  if (locations.tooDeep()) {
-    TextPosition pos = locations.positionOf(locations.tooDeepAt());
-    throw Error(ExitCode::BadInput, file.string() + ":" + std::to_string(pos.line) + ":" +
-                                        std::to_string(pos.column) + ": invalid JSON: nested deeper than " +
-                                        std::to_string(JsonLocations::kMaxDepth) + " levels");
-  }
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(ExitCode::BadInput, describeJsonError(e, text, locations, file));
-  }
-  if (const std::string& twice = locations.firstDuplicateKey(); !twice.empty())
-    failAt(ctx, twice, "the field \"" + twice.substr(twice.rfind('/') + 1) + "\" is given twice in this object",
-           /*at_key=*/true);
+  nlohmann::json doc = parseJsonText(text, locations, file.string());
+  // The edits change the document before it is read, so every check below applies to them; an
+  // error in a value an edit wrote names the edit (EditOrigin), not a line of the file.
+  const std::vector<EditOrigin> origins = applyEdits(doc, edits);
+  ParseContext ctx{file.string(), &locations, &origins};
   Scene scene;
   scene.file = file;
   scene.name = file.stem().string();
@@ -305,6 +249,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
   readBodies(root, ctx, scene);
   checkCameraBodies(scene, ctx);
   root.rejectUnknownKeys();
+  scene.resolved_json = doc.dump();
   return scene;
 }
 

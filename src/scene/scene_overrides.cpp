@@ -1,6 +1,7 @@
 #include "scene/scene_overrides.h"
 
 #include <cmath>
+#include <cstdio>
 #include <regex>
 
 #include "base/error.h"
@@ -9,6 +10,12 @@ namespace tumble {
 namespace {
 
 [[noreturn]] void usage(const std::string& message) { throw Error(ExitCode::Usage, message); }
+
+std::string formatScale(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
 
 // The loader's bound on a whole run (scene_loader.cpp), checked again after a flag changed it.
 void checkTotalSteps(const Scene& scene, const std::string& flag) {
@@ -74,6 +81,26 @@ void setFrameCount(Scene& scene, int frames) {
   if (frames < 1 || frames > 1000000) usage("--frame-count: must be in [1, 1000000]");
   scene.render.frames = frames;
   checkTotalSteps(scene, "--frame-count");
+}
+
+void setTimeScale(Scene& scene, double scale) {
+  if (!(scale > 0 && scale <= 100)) usage("--time-scale: must be in (0, 100], e.g. 0.25 for four times slower");
+  const int steps = scene.simulation.steps_per_frame;
+  const double wanted = steps * scale;   // steps between the new frames
+  const long whole = std::lround(wanted);
+  // The same tolerance as --dt: a scale written as a rounded decimal (0.333333) still lands.
+  if (whole < 1 || std::abs(wanted - whole) > 1e-3 * whole) {
+    char dt[32];
+    std::snprintf(dt, sizeof dt, "%.6g", scene.simulation.step.dt);
+    usage("--time-scale " + formatScale(scale) + ": a frame would be " + formatScale(wanted) + " steps of " + dt +
+          " s; the step must divide the frame interval. Use a scale that is a multiple of 1/" + std::to_string(steps) +
+          ", or a smaller step (--dt)");
+  }
+  const double span = double(scene.render.frames - 1) * steps;   // steps from the first frame to the last
+  scene.simulation.steps_per_frame = static_cast<int>(whole);
+  scene.render.frames = static_cast<int>(std::lround(span / whole)) + 1;
+  scene.render.time_scale = double(whole) / steps;
+  checkTotalSteps(scene, "--time-scale");
 }
 
 void setSize(Scene& scene, const std::string& size) {

@@ -26,6 +26,11 @@ void setFrameCount(Scene& scene, int frames);
 // Another contact model. Throws Error(Usage) when the scene asks for Poisson's or Stronge's
 // restitution law and the model is not "baraff" (the only one with a choice), as the loader does.
 void setContactModel(Scene& scene, ContactModel model, const std::string& flag);
+// Slow (or fast) motion: frames `scale` simulated frame intervals apart, played at the same fps,
+// so 0.25 gives four times the frames per simulated second, each at its own instant, over the
+// same simulated span. Throws Error(Usage) when scale is outside (0, 100] or the step does not
+// divide the new frame interval (a frame must fall on a step).
+void setTimeScale(Scene& scene, double scale);
 // "1280x720" -> width and height. Throws Error(Usage) on anything else.
 void setSize(Scene& scene, const std::string& size);
 

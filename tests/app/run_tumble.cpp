@@ -19,4 +19,11 @@ RunResult runTumble(const std::string& args) {
   return result;
 }
 
+std::filesystem::path freshTempDir(const std::string& name) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 }  // namespace tumble::test

@@ -77,3 +77,15 @@ TEST_CASE("writePng where the folder is a file throws CantCreate", "[io][png]") 
         ExitCode::CantCreate);
   CHECK(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()) == 1);
 }
+
+TEST_CASE("text chunks written with a PNG read back in order, non-ASCII as UTF-8, pixels unchanged", "[io][png]") {
+  test::TempDir dir;
+  RgbImage image = test::syntheticImage(33, 17, 5);
+  const std::vector<PngText> text = {{"Software", "tumble 0.1.0"}, {"tumble renderer", "llvmpipe"},
+                                     {"Title", "Würfel \xe2\x86\x92 Boden"}};
+  writePng(dir / "t.png", image, true, text);
+  writePng(dir / "plain.png", image);
+  CHECK(readPngText(dir / "t.png") == text);
+  CHECK(readPngText(dir / "plain.png").empty());
+  CHECK(readPng(dir / "t.png").pixels == image.pixels);
+}
