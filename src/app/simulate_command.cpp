@@ -7,6 +7,7 @@
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/scene_options.h"
+#include "app/trajectory_source.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -43,7 +44,9 @@ std::vector<BodySample> samplesOf(const World& world) {
 int run(const SimulateOptions& o) {
   Scene scene = loadSceneWithOverrides(o.scene);
   std::unique_ptr<CsvTrajectoryWriter> csv;
-  if (!o.trajectory.empty()) csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite);
+  if (!o.trajectory.empty())
+    csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite,
+                                                std::vector<std::string>{trajectoryComment(scene, o.every_step)});
   BuiltWorld built = buildWorld(scene);
   for (const std::string& w : built.warnings)
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
@@ -90,7 +93,8 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   addSceneOptions(*cmd, o->scene);
   addKeepGoingOption(*cmd, o->scene);
   cmd->add_option("--trajectory", o->trajectory,
-                  "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
+                  "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI), "
+                  "after a '# tumble trajectory' line with the scene's motion hash; render --from-trajectory reads it");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace an existing trajectory file");
   return [o] { return run(*o); };
