@@ -69,7 +69,8 @@ void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
 }
 
 // Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
-// drops the frames whose PNG is already there (resuming an interrupted render).
+// drops the frames whose PNG is already there (resuming an interrupted render), or every frame
+// when the video exists.
 void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::vector<int>& frames) {
   if (o.skip_existing && o.overwrite) throw Error(ExitCode::Usage, "--skip-existing and --overwrite contradict each other");
   if (o.skip_existing && target.kind == OutputTarget::Kind::Video) {
