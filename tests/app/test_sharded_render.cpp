@@ -153,3 +153,15 @@ TEST_CASE("join refuses parts that are missing (65 or 66), doubled, mixed or unl
   CHECK(fileBytes(out) == "precious");
   CHECK(runTumble("join -y " + out + " " + part(dir, 1) + " " + part(dir, 2) + " " + part(dir, 3) + " " + part(dir, 4)).exit_code == 0);
 }
+
+TEST_CASE("--help documents join and render's flags for chunks", "[scale-out]") {
+  auto top = runTumble("--help");
+  CHECK(top.exit_code == 0);
+  CHECK_THAT(top.output, Catch::Contains("join"));
+  auto render = runTumble("render --help");
+  CHECK_THAT(render.output, Catch::Contains("--from-trajectory") && Catch::Contains("--shard") &&
+                                Catch::Contains("SLURM_ARRAY_TASK_ID") && Catch::Contains("JOB_COMPLETION_INDEX"));
+  auto join = runTumble("join --help");
+  CHECK(join.exit_code == 0);
+  CHECK_THAT(join.output, Catch::Contains("re-encoding") && Catch::Contains("65"));
+}
