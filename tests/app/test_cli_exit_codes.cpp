@@ -22,7 +22,7 @@ fs::path freshDir(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("--help documents the subcommands and exit codes and exits 0", "[cli]") {
+TEST_CASE("tumble --help documents the subcommands and exit codes and exits 0", "[cli]") {
   auto r = runTumble("--help");
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.output, Catch::Contains("render") && Catch::Contains("simulate") && Catch::Contains("check"));

@@ -51,7 +51,7 @@ TEST_CASE("chunks are contiguous, in order, cover every frame once and differ in
   CHECK(codeOf([] { shardFrames(range(1, 3), {1, 4, "test"}); }) == ExitCode::Usage);   // a chunk would be empty
 }
 
-TEST_CASE("--shard I/N counts from 1 and refuses what is not a chunk", "[shard]") {
+TEST_CASE("the flag --shard I/N counts from 1 and refuses what is not a chunk", "[shard]") {
   Env env{{"SLURM_ARRAY_TASK_ID", "2"}, {"SLURM_ARRAY_TASK_COUNT", "4"}};
   std::optional<Shard> s = chooseShard({"3/8", {}, ""}, false, lookup(env));   // the flag wins over the environment
   REQUIRE(s);

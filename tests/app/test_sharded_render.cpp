@@ -111,7 +111,7 @@ TEST_CASE("a sharded video goes per chunk, and join makes one video of every fra
   CHECK(parts_luma == whole.luma);   // the coded pictures, untouched
 }
 
-TEST_CASE("--skip-existing makes a re-run of a finished video chunk a no-op, and without it the chunk is refused (73)", "[scale-out]") {
+TEST_CASE("with --skip-existing a re-run of a finished video chunk is a no-op, and without it the chunk is refused (73)", "[scale-out]") {
   fs::path dir = freshFolder("skip");
   std::string csv = simulateOnce(dir);
   const std::string run = "render " + kScene + kFlags + " --from-trajectory " + csv + " --shard 2/4 -o " + (dir / "clip.mp4").string();
@@ -154,7 +154,7 @@ TEST_CASE("join refuses parts that are missing (65 or 66), doubled, mixed or unl
   CHECK(runTumble("join -y " + out + " " + part(dir, 1) + " " + part(dir, 2) + " " + part(dir, 3) + " " + part(dir, 4)).exit_code == 0);
 }
 
-TEST_CASE("--help documents join and render's flags for chunks", "[scale-out]") {
+TEST_CASE("tumble --help documents join and render's flags for chunks", "[scale-out]") {
   auto top = runTumble("--help");
   CHECK(top.exit_code == 0);
   CHECK_THAT(top.output, Catch::Contains("join"));
