@@ -2,9 +2,11 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/camera_rig.h"
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "dynamics/pipeline.h"
+#include "scene/scene_overrides.h"
 #include "scene/world_builder.h"
 
 namespace tumble {
@@ -41,9 +43,22 @@ void printBodies(const Scene& scene, const World& world) {
     std::snprintf(com, sizeof com, "(%.4g, %.4g, %.4g)", b.x.x(), b.x.y(), b.x.z());
     std::printf("  %-16s %-8s %6zu %10s  %-32s %s%s\n", b.name.c_str(), shapeName(b.shape),
                 b.pieces.size(), mass, inertia, com, b.is_static ? "  static" : "");
-    if (scene.bodies[i].shape == ShapeKind::Mesh)
-      std::printf("  %-16s mesh %s\n", "", scene.bodies[i].mesh.string().c_str());
+    if (scene.bodies[i].shape == ShapeKind::Mesh) {
+      // What the picture shows of it: the file as it is, or the convex pieces that collide.
+      const bool hulls = scene.bodies[i].draw.value_or(scene.render.draw) == BodyDraw::Hulls;
+      std::printf("  %-16s mesh %s, drawn %s%s\n", "", scene.bodies[i].mesh.string().c_str(),
+                  hulls ? "as its collision hulls" : "as the file holds it",
+                  !hulls && scene.bodies[i].colour_given ? " in the scene's colour" : "");
+    }
   }
+}
+
+// The default camera's form, and the named ones --camera picks from.
+void printCameras(const Scene& scene) {
+  std::printf("camera    %s", cameraFormName(scene.camera.form));
+  if (!scene.camera.follow_body.empty()) std::printf(" \"%s\"", scene.camera.follow_body.c_str());
+  std::printf("\n");
+  for (const CameraSpec& c : scene.cameras) std::printf("  --camera %-16s %s\n", c.name.c_str(), cameraFormName(c.form));
 }
 
 int run(const SceneOptions& o) {
@@ -57,9 +72,10 @@ int run(const SceneOptions& o) {
               scene.simulation.steps_per_frame, scene.simulation.gravity_m_s2.x(),
               scene.simulation.gravity_m_s2.y(), scene.simulation.gravity_m_s2.z());
   for (const std::string& line : Pipeline(built.world, built.step).describe(built.step)) std::printf("  %s\n", line.c_str());
-  std::printf("render    %dx%d, %d fps, %d frames (%.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
-              r.width, r.height, r.fps, r.frames, r.frames / double(r.fps), r.samples, r.shadow_map_size,
+  std::printf("render    %dx%d, %d fps, %d frames (t = 0 .. %.3f s), %dx MSAA, shadow map %d^2, %zu directional light(s)\n",
+              r.width, r.height, r.fps, r.frames, durationOfFrames(r.frames, r.fps), r.samples, r.shadow_map_size,
               scene.lighting.directional.size());
+  printCameras(scene);
   std::printf("output    %s\n", scene.output.value_or("out/" + scene.name + ".mp4").c_str());
   return 0;
 }

@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/camera_rig.h"
 #include "app/commands.h"
 #include "app/frame_check.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
+#include "app/render_dry_run.h"
 #include "app/scene_drawing.h"
 #include "app/scale_out_options.h"
 #include "app/scene_options.h"
@@ -29,9 +31,9 @@ namespace {
 
 struct RenderOptions {
   SceneOptions scene;
-  std::string output, size, frames, shaders;
+  std::string output, size, frames, shaders, camera;
   std::optional<int> start, end, crf, samples, shadow_map_size;
-  bool overwrite = false, skip_existing = false;
+  bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
   std::string from_trajectory;  // motion from this CSV instead of simulating; empty: simulate
   ShardRequest shard;
@@ -113,12 +115,17 @@ int run(const RenderOptions& o) {
   }
   Scene scene = loadSceneWithOverrides(o.scene);
   applyRenderOverrides(o, scene);
+  const CameraSpec& camera = pickCamera(scene, o.camera);
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
   std::optional<Shard> shard = chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv);
   if (shard) frames = shardFrames(frames, *shard);
   std::string output = !o.output.empty() ? o.output : scene.output.value_or("out/" + scene.name + ".mp4");
   OutputTarget target = parseOutput(output, static_cast<int>(frames.size()));
   if (shard) useShardOutput(*shard, frames, target, o.scene.quiet);
+  if (o.dry_run) {
+    printDryRun({scene, camera, frames, target, o.overwrite}, stdout);
+    return 0;
+  }
   resolveExisting(o, target, frames);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
@@ -136,15 +143,19 @@ int run(const RenderOptions& o) {
 
   auto total_start = std::chrono::steady_clock::now();
   PhaseTimes times;
-  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, frames.back(), o.scene.keep_going};
+  // A fit camera frames the whole clip, so its motion is simulated to the end whatever is rendered.
+  const int last_simulated = camera.form == CameraSpec::Form::Fit ? scene.render.frames : frames.back();
+  SimulationPlan plan{built.step, scene.simulation.steps_per_frame, last_simulated, o.scene.keep_going};
   SceneDrawing drawing = prepareDrawing(scene, built.world);
+  for (const std::string& w : drawing.warnings)
+    if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
   std::optional<Simulator> simulator;   // none when the motion is read from a trajectory file
   Trajectory trajectory;
   auto start = std::chrono::steady_clock::now();
   if (!o.from_trajectory.empty()) {
     std::vector<std::string> names;
     for (const RigidBody& b : built.world.bodies) names.push_back(b.name);
-    trajectory = readTrajectoryFor(scene, names, o.from_trajectory, frames);
+    trajectory = readTrajectoryFor(scene, names, o.from_trajectory, last_simulated);
   } else {
     simulator.emplace(std::move(built.world), plan);
     Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
@@ -165,8 +176,9 @@ int run(const RenderOptions& o) {
   config.shadow_map_size = scene.render.shadow_map_size;
   config.shader_dir = o.shaders;
   std::unique_ptr<Renderer> renderer = Renderer::create(config);
-  std::vector<int> mesh_ids;
-  for (const DrawMesh& m : drawing.meshes) mesh_ids.push_back(renderer->addMesh(m));
+  std::vector<int> mesh_ids = uploadDrawing(*renderer, drawing);
+  const std::vector<DrawCamera> cameras =
+      cameraPath(camera, trajectory, bodyRadii(drawing), double(scene.render.width) / scene.render.height);
 
   Progress progress("render", static_cast<int>(frames.size()), !o.scene.quiet);
   RgbImage image;
@@ -174,6 +186,7 @@ int run(const RenderOptions& o) {
   for (int frame : frames) {
     if (interruptRequested()) break;
     poseInstances(drawing, trajectory.frames[frame - 1], mesh_ids);
+    drawing.frame.camera = cameras[frame - 1];
     start = std::chrono::steady_clock::now();
     renderer->draw(drawing.frame);
     times.render_ms.push_back(1e3 * secondsSince(start));
@@ -234,6 +247,7 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output,
                   "out.mp4 | out.mkv | out.mov | out/ | 'out/frame_####.png' | 'out/frame_%04d.png' "
                   "(default: the scene's \"output\", else out/SCENE.mp4)");
+  cmd->add_option("--camera", o->camera, "Render through the scene's camera of this name (its \"cameras\")");
   cmd->add_option("--size", o->size, "Frame size WIDTHxHEIGHT, e.g. 1280x720");
   cmd->add_option("-s,--start", o->start, "First frame to render (frames count from 1)");
   cmd->add_option("-e,--end", o->end, "Last frame to render");
@@ -248,6 +262,8 @@ std::function<int()> addRenderCommand(CLI::App& app) {
                   "built into tumble, to try shader edits without rebuilding")
       ->envname("TUMBLE_SHADER_DIR");
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
+  cmd->add_flag("--dry-run", o->dry_run,
+                "Print the resolved settings, each frame's simulated time and output file; write nothing");
   cmd->add_flag("--skip-existing", o->skip_existing,
                 "Keep PNG frames that already exist (resume); with a video, do nothing if it exists (a finished chunk)");
   cmd->add_option("--check-against", o->check_against,

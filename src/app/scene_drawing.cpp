@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/smooth_drawing.h"
+#include "app/visual_drawing.h"
 
 namespace tumble {
 namespace {
@@ -38,22 +39,6 @@ DrawMesh meshOf(const RigidBody& body, int subdivisions) {
   return mesh;
 }
 
-DrawCamera cameraOf(const CameraSpec& spec) {
-  DrawCamera cam;
-  cam.eye = spec.position_m.cast<float>();
-  if (spec.orientation) {
-    // The camera looks along its own -z with +y up (the OpenGL and Blender camera convention).
-    Eigen::Matrix3d R = spec.orientation->toRotationMatrix();
-    cam.target = (spec.position_m - R.col(2)).cast<float>();
-    cam.up = R.col(1).cast<float>();
-  } else {
-    cam.target = spec.look_at_m->cast<float>();
-    cam.up = spec.up.normalized().cast<float>();
-  }
-  cam.fov_y_deg = static_cast<float>(spec.fov_y_deg);
-  return cam;
-}
-
 }  // namespace
 
 Eigen::Vector3f srgbToLinear(const Eigen::Vector3d& srgb) {
@@ -67,7 +52,6 @@ Eigen::Vector3f srgbToLinear(const Eigen::Vector3d& srgb) {
 
 SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
   SceneDrawing d;
-  d.frame.camera = cameraOf(scene.camera);
   for (const DirectionalLightSpec& l : scene.lighting.directional) {
     DirectionalLight light;
     light.direction = l.direction.normalized().cast<float>();
@@ -80,36 +64,69 @@ SceneDrawing prepareDrawing(const Scene& scene, const World& world) {
   d.frame.background = srgbToLinear(scene.render.background_srgb);
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& body = world.bodies[i];
+    std::vector<DrawnPart>& parts = d.parts_of_body.emplace_back();
     if (body.shape == ShapeKind::Plane) {
       d.frame.ground.present = true;
       d.frame.ground.height = static_cast<float>(body.x.z());
       d.frame.ground.colour_a = srgbToLinear(body.colour_srgb);
       d.frame.ground.colour_b = d.frame.ground.colour_a * 0.72f;
-      d.mesh_of_body.push_back(-1);
-    } else {
-      d.mesh_of_body.push_back(static_cast<int>(d.meshes.size()));
-      // the world's bodies are the scene's, in order (world_builder.h)
-      d.meshes.push_back(meshOf(body, i < scene.bodies.size() ? scene.bodies[i].subdivisions : 3));
+      continue;
     }
+    // the world's bodies are the scene's, in order (world_builder.h)
+    const BodySpec* spec = i < scene.bodies.size() ? &scene.bodies[i] : nullptr;
+    if (spec && spec->shape == ShapeKind::Mesh && spec->draw.value_or(scene.render.draw) == BodyDraw::Visual) {
+      appendVisualParts(*spec, body, d, parts);
+      continue;
+    }
+    parts.push_back({static_cast<int>(d.meshes.size()), srgbToLinear(body.colour_srgb)});
+    d.meshes.push_back(meshOf(body, spec ? spec->subdivisions : 3));
   }
-  for (const RigidBody& body : world.bodies) {
-    if (body.shape == ShapeKind::Plane) continue;
-    DrawInstance inst;
-    inst.colour = srgbToLinear(body.colour_srgb);
-    d.frame.instances.push_back(inst);
-  }
+  for (const std::vector<DrawnPart>& parts : d.parts_of_body)
+    for (const DrawnPart& part : parts) {
+      DrawInstance inst;
+      inst.colour = part.colour;
+      d.frame.instances.push_back(inst);
+    }
   return d;
+}
+
+std::vector<double> bodyRadii(const SceneDrawing& d) {
+  std::vector<double> radii;
+  for (const std::vector<DrawnPart>& parts : d.parts_of_body) {
+    double r = 0;
+    for (const DrawnPart& part : parts)
+      for (const Eigen::Vector3f& p : d.meshes[static_cast<std::size_t>(part.mesh)].positions)
+        r = std::max(r, static_cast<double>(p.norm()));
+    radii.push_back(r);
+  }
+  return radii;
+}
+
+std::vector<int> uploadDrawing(Renderer& renderer, const SceneDrawing& d) {
+  std::vector<int> texture_ids, mesh_ids;
+  for (const DrawTexture& t : d.textures) texture_ids.push_back(renderer.addTexture(t));
+  for (const DrawMesh& m : d.meshes) {
+    if (m.texture < 0) {
+      mesh_ids.push_back(renderer.addMesh(m));
+      continue;
+    }
+    DrawMesh uploaded = m;
+    uploaded.texture = texture_ids[static_cast<std::size_t>(m.texture)];
+    mesh_ids.push_back(renderer.addMesh(uploaded));
+  }
+  return mesh_ids;
 }
 
 void poseInstances(SceneDrawing& d, const std::vector<BodySample>& samples,
                    const std::vector<int>& uploaded_mesh_ids) {
   std::size_t next = 0;
   for (std::size_t b = 0; b < samples.size(); ++b) {
-    int mesh = d.mesh_of_body[b];
-    if (mesh < 0) continue;
-    DrawInstance& inst = d.frame.instances[next++];
-    inst.mesh = uploaded_mesh_ids[mesh];
-    inst.model = Eigen::Translation3f(samples[b].x.cast<float>()) * samples[b].q.cast<float>();
+    const Eigen::Affine3f model(Eigen::Translation3f(samples[b].x.cast<float>()) * samples[b].q.cast<float>());
+    for (const DrawnPart& part : d.parts_of_body[b]) {
+      DrawInstance& inst = d.frame.instances[next++];
+      inst.mesh = uploaded_mesh_ids[static_cast<std::size_t>(part.mesh)];
+      inst.model = model;
+    }
   }
 }
 

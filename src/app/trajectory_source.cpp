@@ -46,7 +46,7 @@ std::string trajectoryComment(const Scene& scene, bool every_step) {
 }
 
 Trajectory readTrajectoryFor(const Scene& scene, const std::vector<std::string>& body_names, const fs::path& file,
-                             const std::vector<int>& frames) {
+                             int last_frame) {
   TrajectoryCsv csv = readTrajectoryCsvFile(file);
   std::map<std::string, std::string> header;
   for (const std::string& c : csv.comments)
@@ -76,11 +76,11 @@ Trajectory readTrajectoryFor(const Scene& scene, const std::vector<std::string>&
   }
   const int held = csv.rows.size() % bodies == 0 ? static_cast<int>(trajectory.frames.size())
                                                  : static_cast<int>(trajectory.frames.size()) - 1;
-  if (!frames.empty() && frames.back() > held)
-    refuse(file, "it holds frames 1.." + std::to_string(held) + ", and frame " + std::to_string(frames.back()) +
-                     " was asked for (simulate as long as you render: same --duration)", scene);
-  trajectory.frames.resize(held);
-  trajectory.times.resize(held);
+  if (last_frame > held)
+    refuse(file, "it holds frames 1.." + std::to_string(held) + ", and frame " + std::to_string(last_frame) +
+                     " is needed (simulate as long as you render: same --duration)", scene);
+  trajectory.frames.resize(static_cast<std::size_t>(last_frame));
+  trajectory.times.resize(static_cast<std::size_t>(last_frame));
   return trajectory;
 }
 

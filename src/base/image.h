@@ -12,4 +12,10 @@ struct RgbImage {
   std::vector<std::uint8_t> pixels;   // width * height * 3
 };
 
+// 8-bit RGBA, top row first: a texture as decoded from its file (colour sRGB-encoded, alpha linear).
+struct RgbaImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;   // width * height * 4
+};
+
 }  // namespace tumble

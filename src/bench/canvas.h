@@ -1,37 +1,69 @@
-// A tiny raster canvas for the benchmark plots: pixels, lines, rectangles and 5x7 bitmap text on
-// an RgbImage, which src/io writes as PNG. Enough for a log-log chart without a plotting library.
+// The drawing surface of the benchmark plots, on cairo: antialiased lines, markers and text in
+// DejaVu Sans (found through fontconfig, drawn through FreeType). One Canvas draws either pixels,
+// handed over as an RgbImage for src/io to write as PNG, or an SVG document, so the same drawing
+// code makes both files.
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "base/image.h"
+#include "bench/series_style.h"
+
+typedef struct _cairo cairo_t;
+typedef struct _cairo_surface cairo_surface_t;
 
 namespace tumble::bench {
 
-using Rgb = std::array<std::uint8_t, 3>;
+struct Font {
+  double size = 12;   // px
+  bool bold = false;
+};
+
+enum class Align { Left, Centre, Right };
 
 class Canvas {
  public:
-  Canvas(int width, int height, Rgb background);
+  enum class Target { Raster, Svg };
 
-  void pixel(int x, int y, Rgb c);
-  void fillRect(int x0, int y0, int x1, int y1, Rgb c);   // inclusive corners
-  // A line `thickness` pixels wide (Bresenham, stamped with a square brush).
-  void line(int x0, int y0, int x1, int y1, Rgb c, int thickness = 1);
-  void dashedHLine(int x0, int x1, int y, Rgb c);
-  // Text in the 5x7 font scaled by `scale`; lower case is drawn as upper case. Returns the width.
-  int text(int x, int y, const std::string& s, Rgb c, int scale = 1);
-  static int textWidth(const std::string& s, int scale = 1) { return static_cast<int>(s.size()) * 6 * scale; }
+  // A white page of width x height px.
+  Canvas(Target target, int width, int height);
+  ~Canvas();
+  Canvas(const Canvas&) = delete;
+  Canvas& operator=(const Canvas&) = delete;
 
-  const RgbImage& image() const { return image_; }
+  void line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed = false);
+  void polyline(const std::vector<std::pair<double, double>>& points, Rgb c, double width);
+  void strokeRect(double x0, double y0, double x1, double y1, Rgb c, double width);
+  // A filled marker centred on (x, y) whose shape fits a circle of `radius` px.
+  void marker(double x, double y, Marker m, double radius, Rgb c);
+  // Text whose vertical middle sits at y, aligned on x; `angle_deg` turns it about (x, y)
+  // (-90: reads upwards, as a y-axis title).
+  void text(double x, double y, const std::string& s, Font f, Rgb c, Align a = Align::Left, double angle_deg = 0);
+  double textWidth(const std::string& s, Font f);
+
+  // Raster canvases: the pixels drawn so far.
+  RgbImage image() const;
+  // Svg canvases: ends the drawing and returns the document, titled `title`. cairo draws text as
+  // glyph outlines, which no search, screen reader or test can read; so every string drawn is
+  // also laid over its outlines as invisible SVG <text>, from the same text() call that drew it.
+  std::string finishSvg(const std::string& title);
 
  private:
-  RgbImage image_;
-};
+  struct Label {
+    std::string s;
+    double x, y, size, angle_deg;   // baseline start, as drawn
+    bool bold;
+  };
 
-// Rows of a glyph, bit 4 = leftmost column; unknown characters draw as a box.
-const std::array<std::uint8_t, 7>& glyph(char c);
+  void setSource(Rgb c);
+  void useFont(Font f);
+
+  Target target_;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
+  std::string svg_;                 // the SVG surface's output, streamed as cairo writes it
+  std::vector<Label> labels_;
+};
 
 }  // namespace tumble::bench

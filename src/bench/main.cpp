@@ -10,6 +10,7 @@
 #include "bench/bench_options.h"
 #include "bench/job_process.h"
 #include "bench/report.h"
+#include "bench/results_csv.h"
 #include "bench/results_page.h"
 
 namespace tb = tumble::bench;
@@ -58,6 +59,16 @@ tb::SceneResults runScene(const tb::BenchScene& scene, const std::vector<tb::Eng
   return out;
 }
 
+// --plot-from: the plots of a finished run, redrawn from its CSV; nothing is simulated.
+int plotFrom(const std::filesystem::path& csv, const std::filesystem::path& out_dir) {
+  const std::vector<tb::SceneResults> all = tb::readResultsCsv(csv);
+  std::filesystem::create_directories(out_dir);
+  for (const tb::SceneResults& s : all) tb::writePlot(out_dir / (s.scene.id + ".png"), s);
+  std::cout << "wrote " << all.size() << " plots (PNG and SVG) from " << csv.string() << " in "
+            << out_dir.string() << "/\n";
+  return 0;
+}
+
 // What did not run in full, in one place at the end of the report.
 void printCuts(std::ostream& out, const std::vector<tb::SceneResults>& all) {
   out << "\nCut, skipped or failed:\n";
@@ -73,7 +84,7 @@ int main(int argc, char** argv) {
   const tb::RunStamp stamp_args = tb::stampThisRun({argv + 1, argv + argc});
   tb::BenchOptions o;
   bool list = false;
-  std::filesystem::path docs_dir;
+  std::filesystem::path docs_dir, plot_from;
   CLI::App app{"tumble-bench: wall time per simulated second against error, tumble and its peers"};
   app.add_flag("--quick", o.quick, "smoke test: dt 1/60 and 1/240, short durations, one run per point");
   app.add_option("--scenes", o.scenes, "scene ids (S1 S2a S2b S3 S4 S5 S6_100 S6_300 S6_1000 S7 S8 S8ccd)")->delimiter(',');
@@ -87,6 +98,10 @@ int main(int argc, char** argv) {
   app.add_option("--docs", docs_dir, "also write results.md (the tables, stamped with date, commit, "
                  "machine and engine versions) and put the CSV and plots beside it, e.g. docs/bench")
       ->excludes(out);
+  app.add_option("--plot-from", plot_from, "draw the plots from a results.csv written before, running "
+                 "nothing; they go beside the CSV, or into -o DIR")
+      ->check(CLI::ExistingFile)
+      ->excludes("--docs");
   app.add_flag("--list", list, "list the engine settings in this build and exit");
   CLI11_PARSE(app, argc, argv);
   if (o.quick) tb::applyQuick(o);
@@ -98,6 +113,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    if (!plot_from.empty()) {
+      const std::filesystem::path beside = plot_from.has_parent_path() ? plot_from.parent_path() : ".";
+      return plotFrom(plot_from, out->count() ? o.out_dir : beside);
+    }
     std::filesystem::create_directories(o.out_dir);
     tb::RunStamp stamp = stamp_args;
     stamp.engines = tb::engineVersions();

@@ -32,6 +32,8 @@ std::unique_ptr<MetricCollector> makeCollector(const BenchScene& scene, double d
 
 // The one error each scene is plotted by (a metric name from its collector, or "sc_err").
 std::string headlineMetric(SceneKind kind);
+// The plots' y-axis title for it: the metric, what it measures and its unit.
+std::string headlineAxisTitle(SceneKind kind);
 
 // Shared helpers for the collectors.
 BoxPose poseOf(const BoxBody& box, const BodyState& s);

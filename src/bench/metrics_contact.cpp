@@ -160,6 +160,21 @@ std::string headlineMetric(SceneKind kind) {
   return "";
 }
 
+std::string headlineAxisTitle(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::CubeDrop: return "apex_err = |apex − 0.75 m| (m)";
+    case SceneKind::InclineSlide: return "abs_err = |slide − ½at²| (m)";
+    case SceneKind::InclineStick: return "creep: displacement down the slope (m)";
+    case SceneKind::Rest:
+    case SceneKind::Stack:
+    case SceneKind::MassRatio: return "max_pen: deepest penetration over the run (m)";
+    case SceneKind::FreeSpin: return "dE_max = max |E/E₀ − 1| (relative)";
+    case SceneKind::Pile: return "sc_err: RMS distance to the run at dt/4 (m)";
+    case SceneKind::Tunnel: return "passed_frac: share of cubes through the wall (fraction)";
+  }
+  return "";
+}
+
 BoxPose poseOf(const BoxBody& box, const BodyState& s) {
   return {box.half_extents, s.x, s.q.toRotationMatrix()};
 }

@@ -9,6 +9,7 @@
 
 #include "bench/metrics.h"
 #include "bench/scene_plot.h"
+#include "io/atomic_file.h"
 #include "io/png_file.h"
 
 namespace tumble::bench {
@@ -21,6 +22,20 @@ std::string csvField(std::string s) {
   std::string q = "\"";
   for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
+}
+
+// Whole or not at all, as every output: a temporary sibling renamed when complete.
+void writeTextFile(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path temp = temporarySibling(file, "partial");
+  {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    if (!out.flush()) {
+      std::filesystem::remove(temp);
+      throwCantWrite(file, "write failed");
+    }
+  }
+  commitFile(temp, file, true);
 }
 
 std::string pad(const std::string& s, std::size_t w) { return s.size() >= w ? s + " " : s + std::string(w - s.size(), ' '); }
@@ -111,7 +126,14 @@ void writeCsv(const std::filesystem::path& file, const std::vector<SceneResults>
 }
 
 void writePlot(const std::filesystem::path& file, const SceneResults& s) {
-  writePng(file, plotScene(s.scene.id + " " + s.scene.title, headlineMetric(s.scene.kind), s.rows));
+  const PlotLabels labels{s.scene.id + " " + s.scene.title, headlineMetric(s.scene.kind),
+                          headlineAxisTitle(s.scene.kind)};
+  Canvas raster(Canvas::Target::Raster, kPlotWidth, kPlotHeight);
+  drawScenePlot(raster, labels, s.rows);
+  writePng(file, raster.image());
+  Canvas vector(Canvas::Target::Svg, kPlotWidth, kPlotHeight);
+  drawScenePlot(vector, labels, s.rows);
+  writeTextFile(std::filesystem::path(file).replace_extension(".svg"), vector.finishSvg(labels.title));
 }
 
 }  // namespace tumble::bench

@@ -36,6 +36,7 @@ std::vector<std::string> cutLines(const std::vector<SceneResults>& all);
 // Long format, one metric per line: scene,setting,engine,dt_s,hz,wall_s_per_sim_s,reps,
 // simulated_s,cut,peak_rss_mb,failed,metric,value,headline,note.
 void writeCsv(const std::filesystem::path& file, const std::vector<SceneResults>& all);
+// The scene's plot as `file` (PNG) and, beside it, the same drawing as SVG (FILE with .svg).
 void writePlot(const std::filesystem::path& file, const SceneResults& s);
 
 }  // namespace tumble::bench

@@ -5,34 +5,102 @@
 #include <limits>
 #include <map>
 
-#include "bench/canvas.h"
+#include "bench/log_axis.h"
 
 namespace tumble::bench {
 namespace {
 
-constexpr int kWidth = 760, kHeight = 460;
-constexpr int kLeft = 64, kRight = 560, kTop = 36, kBottom = 400;   // the plot area
-constexpr Rgb kWhite{255, 255, 255}, kInk{30, 30, 30}, kGrid{222, 222, 222};
-
-// Colour per engine family, shade per setting within it: peers are told apart at a glance.
-Rgb colourOf(const std::string& engine, int shade) {
-  static const std::map<std::string, std::vector<Rgb>> palette = {
-      {"tumble", {{200, 40, 30}, {240, 120, 40}, {150, 20, 90}, {230, 80, 150}}},
-      {"bullet", {{30, 90, 200}, {90, 160, 235}, {20, 40, 120}}},
-      {"ode", {{30, 150, 60}, {120, 200, 90}}},
-      {"mujoco", {{120, 70, 170}, {170, 140, 210}}},
-  };
-  const auto it = palette.find(engine);
-  if (it == palette.end()) return {90, 90, 90};
-  return it->second[static_cast<std::size_t>(shade) % it->second.size()];
-}
+constexpr double kLeft = 100, kRight = 690, kTop = 50, kBottom = 530;   // px: the plot area
+constexpr double kLegendX = 712;
+constexpr Rgb kInk{25, 25, 25}, kMuted{90, 90, 90}, kGrid{225, 225, 225}, kMinorGrid{243, 243, 243};
+constexpr Font kTitleFont{18, true}, kAxisFont{13, false}, kTickFont{13, false}, kLegendFont{12, false};
 
 struct Series {
-  std::string name, engine;
+  std::string name;
+  SeriesStyle style;
   std::vector<std::pair<double, double>> points;   // (x, y), ordered by decreasing dt
 };
 
-std::string decade(int e) { return "1E" + std::to_string(e); }
+std::vector<Series> collectSeries(const std::string& metric, const std::vector<RunResult>& results) {
+  std::vector<Series> series;
+  std::map<Family, int> in_family;
+  for (const RunResult& r : results) {
+    const double x = r.wall_per_sim, y = metricValue(r, metric);
+    if (r.failed || !std::isfinite(x) || x <= 0 || !std::isfinite(y)) continue;
+    auto it = std::find_if(series.begin(), series.end(), [&](const Series& s) { return s.name == r.setting; });
+    if (it == series.end()) {
+      const Family f = familyOf(r.setting, r.engine);
+      it = series.insert(series.end(), Series{r.setting, seriesStyle(f, in_family[f]++), {}});
+    }
+    it->points.push_back({x, std::abs(y)});
+  }
+  return series;
+}
+
+// The axes' ranges over the data; exact zeros on y get their own row and are left out here.
+struct Ranges {
+  double xlo = std::numeric_limits<double>::infinity(), xhi = 0;
+  double ylo = std::numeric_limits<double>::infinity(), yhi = 0;
+  bool any_zero = false;
+};
+
+Ranges rangesOf(const std::vector<Series>& series) {
+  Ranges r;
+  for (const Series& s : series)
+    for (auto [x, y] : s.points) {
+      r.xlo = std::min(r.xlo, x);
+      r.xhi = std::max(r.xhi, x);
+      if (y > 0) {
+        r.ylo = std::min(r.ylo, y);
+        r.yhi = std::max(r.yhi, y);
+      } else {
+        r.any_zero = true;
+      }
+    }
+  if (r.xlo > r.xhi) { r.xlo = 1e-3; r.xhi = 1; }
+  if (r.ylo > r.yhi) { r.ylo = 1e-3; r.yhi = 1; }
+  return r;
+}
+
+void drawAxes(Canvas& c, const LogAxis& ax, const LogAxis& ay, double y_log_bottom) {
+  auto px = [&](double v) { return kLeft + ax.fraction(v) * (kRight - kLeft); };
+  auto py = [&](double v) { return y_log_bottom - ay.fraction(v) * (y_log_bottom - kTop); };
+  // Grid first, so that ticks and data lie on top of it.
+  for (double v : ax.minors) c.line(px(v), kTop, px(v), kBottom, kMinorGrid, 1);
+  for (double v : ay.minors) c.line(kLeft, py(v), kRight, py(v), kMinorGrid, 1);
+  for (int e : ax.majors) c.line(px(std::pow(10.0, e)), kTop, px(std::pow(10.0, e)), kBottom, kGrid, 1);
+  for (int e : ay.majors) c.line(kLeft, py(std::pow(10.0, e)), kRight, py(std::pow(10.0, e)), kGrid, 1);
+  // Ticks outside the frame: 7 px at decades, 4 px at the minor ticks.
+  for (double v : ax.minors) c.line(px(v), kBottom, px(v), kBottom + 4, kInk, 1);
+  for (double v : ay.minors) c.line(kLeft - 4, py(v), kLeft, py(v), kInk, 1);
+  for (int e : ax.majors) {
+    const double x = px(std::pow(10.0, e));
+    c.line(x, kBottom, x, kBottom + 7, kInk, 1);
+    if (ax.labelled(e)) c.text(x, kBottom + 18, decadeLabel(e), kTickFont, kInk, Align::Centre);
+  }
+  for (const auto& [v, label] : ax.minor_labels) c.text(px(v), kBottom + 18, label, kTickFont, kMuted, Align::Centre);
+  for (const auto& [v, label] : ay.minor_labels) c.text(kLeft - 10, py(v), label, kTickFont, kMuted, Align::Right);
+  for (int e : ay.majors) {
+    const double y = py(std::pow(10.0, e));
+    c.line(kLeft - 7, y, kLeft, y, kInk, 1);
+    if (ay.labelled(e)) c.text(kLeft - 10, y, decadeLabel(e), kTickFont, kInk, Align::Right);
+  }
+  c.strokeRect(kLeft, kTop, kRight, kBottom, kInk, 1);
+}
+
+void drawLegend(Canvas& c, const std::vector<Series>& series, bool any_zero) {
+  double y = kTop + 6;
+  for (const Series& s : series) {
+    c.line(kLegendX, y, kLegendX + 24, y, s.style.colour, s.style.line_width);
+    c.marker(kLegendX + 12, y, s.style.marker, 4, s.style.colour);
+    c.text(kLegendX + 32, y, s.name, kLegendFont, kInk);
+    y += 17;
+  }
+  y += 8;
+  c.marker(kLegendX + 12, y, Marker::Circle, 6, kMuted);
+  c.text(kLegendX + 32, y, "largest dt of a setting", kLegendFont, kMuted);
+  if (any_zero) c.text(kLegendX, y + 18, "0: exact answer (error 0)", kLegendFont, kMuted);
+}
 
 }  // namespace
 
@@ -42,74 +110,34 @@ double metricValue(const RunResult& r, const std::string& name) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-RgbImage plotScene(const std::string& title, const std::string& metric,
-                   const std::vector<RunResult>& results) {
-  std::vector<Series> series;
-  for (const RunResult& r : results) {
-    const double x = r.wall_per_sim, y = metricValue(r, metric);
-    if (r.failed || !std::isfinite(x) || x <= 0 || !std::isfinite(y)) continue;
-    auto it = std::find_if(series.begin(), series.end(), [&](const Series& s) { return s.name == r.setting; });
-    if (it == series.end()) it = series.insert(series.end(), Series{r.setting, r.engine, {}});
-    it->points.push_back({x, std::abs(y)});
-  }
-  // Axis ranges in whole decades around the data.
-  double xlo = 1e300, xhi = 1e-300, ylo = 1e300, yhi = 1e-300;
-  bool any_zero = false;
-  for (const Series& s : series)
-    for (auto [x, y] : s.points) {
-      xlo = std::min(xlo, x);
-      xhi = std::max(xhi, x);
-      if (y > 0) { ylo = std::min(ylo, y); yhi = std::max(yhi, y); } else any_zero = true;
-    }
-  if (xlo > xhi) { xlo = 1e-3; xhi = 1; }
-  if (ylo > yhi) { ylo = 1e-3; yhi = 1; }
-  const int ex0 = static_cast<int>(std::floor(std::log10(xlo))), ex1 = std::max(ex0 + 1, static_cast<int>(std::ceil(std::log10(xhi))));
-  const int ey0 = static_cast<int>(std::floor(std::log10(ylo))), ey1 = std::max(ey0 + 1, static_cast<int>(std::ceil(std::log10(yhi))));
-  // Exact zeros get their own row under the lowest decade.
-  const int zero_row = kBottom - 12;
-  const int y_axis_bottom = any_zero ? zero_row - 18 : kBottom;
-  auto px = [&](double x) { return kLeft + static_cast<int>(std::lround((std::log10(x) - ex0) / (ex1 - ex0) * (kRight - kLeft))); };
-  auto py = [&](double y) {
-    if (y <= 0) return zero_row;
-    return y_axis_bottom - static_cast<int>(std::lround((std::log10(y) - ey0) / (ey1 - ey0) * (y_axis_bottom - kTop)));
-  };
+void drawScenePlot(Canvas& c, const PlotLabels& labels, const std::vector<RunResult>& results) {
+  const std::vector<Series> series = collectSeries(labels.metric, results);
+  const Ranges r = rangesOf(series);
+  const LogAxis ax = logAxis(r.xlo, r.xhi), ay = logAxis(r.ylo, r.yhi);
+  // Exact zeros cannot sit on a log axis: they get a dashed row under it, below a gap.
+  const double zero_row = kBottom - 12;
+  const double y_log_bottom = r.any_zero ? kBottom - 36 : kBottom;
+  auto px = [&](double x) { return kLeft + ax.fraction(x) * (kRight - kLeft); };
+  auto py = [&](double y) { return y <= 0 ? zero_row : y_log_bottom - ay.fraction(y) * (y_log_bottom - kTop); };
 
-  Canvas c(kWidth, kHeight, kWhite);
-  for (int e = ex0; e <= ex1; ++e) {
-    c.line(px(std::pow(10.0, e)), kTop, px(std::pow(10.0, e)), kBottom, kGrid);
-    c.text(px(std::pow(10.0, e)) - Canvas::textWidth(decade(e)) / 2, kBottom + 6, decade(e), kInk);
+  drawAxes(c, ax, ay, y_log_bottom);
+  if (r.any_zero) {
+    c.line(kLeft, zero_row, kRight, zero_row, kMuted, 1, true);
+    c.text(kLeft - 10, zero_row, "0", kTickFont, kInk, Align::Right);
   }
-  const int ystep = (ey1 - ey0) > 10 ? 2 : 1;
-  for (int e = ey0; e <= ey1; e += ystep) {
-    c.line(kLeft, py(std::pow(10.0, e)), kRight, py(std::pow(10.0, e)), kGrid);
-    c.text(kLeft - 6 - Canvas::textWidth(decade(e)), py(std::pow(10.0, e)) - 3, decade(e), kInk);
-  }
-  if (any_zero) {
-    c.dashedHLine(kLeft, kRight, zero_row, kInk);
-    c.text(kLeft - 12, zero_row - 3, "0", kInk);
-  }
-  c.line(kLeft, kTop, kLeft, kBottom, kInk);
-  c.line(kLeft, kBottom, kRight, kBottom, kInk);
-  c.text(kLeft, 8, title, kInk, 2);
-  c.text((kLeft + kRight) / 2 - Canvas::textWidth("WALL S PER SIMULATED S") / 2, kBottom + 22, "wall s per simulated s", kInk);
-  c.text(kLeft, kTop - 12, metric, kInk);
+  c.text(kLeft, 24, labels.title, kTitleFont, kInk);
+  c.text((kLeft + kRight) / 2, kBottom + 44, "wall time per simulated second (s/s)", kAxisFont, kInk, Align::Centre);
+  c.text(28, (kTop + kBottom) / 2, labels.y_title, kAxisFont, kInk, Align::Centre, -90);
 
-  std::map<std::string, int> shades;
-  int legend_y = kTop;
   for (const Series& s : series) {
-    const Rgb col = colourOf(s.engine, shades[s.engine]++);
-    for (std::size_t i = 0; i + 1 < s.points.size(); ++i)
-      c.line(px(s.points[i].first), py(s.points[i].second), px(s.points[i + 1].first), py(s.points[i + 1].second), col, 2);
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const int r = i == 0 ? 4 : 2;   // the largest dt gets the big dot
-      c.fillRect(px(s.points[i].first) - r, py(s.points[i].second) - r, px(s.points[i].first) + r, py(s.points[i].second) + r, col);
-    }
-    c.fillRect(kRight + 16, legend_y, kRight + 28, legend_y + 6, col);
-    c.text(kRight + 34, legend_y, s.name, kInk);
-    legend_y += 14;
+    std::vector<std::pair<double, double>> line;
+    for (auto [x, y] : s.points) line.push_back({px(x), py(y)});
+    c.polyline(line, s.style.colour, s.style.line_width);
+    const double broader = s.style.line_width / 2 - 0.8;   // markers grow with the line
+    for (std::size_t i = 0; i < line.size(); ++i)   // the largest dt, first, gets the big marker
+      c.marker(line[i].first, line[i].second, s.style.marker, (i == 0 ? 6 : 3.5) + broader, s.style.colour);
   }
-  c.text(kRight + 16, legend_y + 8, "big dot: largest dt", kInk);
-  return c.image();
+  drawLegend(c, series, r.any_zero);
 }
 
 }  // namespace tumble::bench

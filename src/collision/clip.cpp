@@ -1,6 +1,7 @@
 // Contact points from the chosen feature pair: clipping for faces, closest points for edges.
 #include <algorithm>
 #include <cassert>
+#include <utility>
 
 #include "collision/narrow_internal.h"
 
@@ -129,6 +130,9 @@ bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double ma
   if (!edgeAxis(a, ea, b, eb, axis, sep) || sep > margin) return false;
   const auto& [a0, a1] = a.hull->piece->edges[ea];
   const auto& [b0, b1] = b.hull->piece->edges[eb];
+  // Edges within kAbsTolerance of parallel touch along a line, not at a point: held at one point
+  // (where skew lines cross, anywhere along it) the pair would turn about it.
+  if (edgeOverlapContact(a, a0, a1, b, b0, b1, axis, out)) return true;
   const Eigen::Vector3d p = a.vertices[a0], d = a.vertices[a1] - p;
   const Eigen::Vector3d q = b.vertices[b0], e = b.vertices[b1] - q;
   double s = 0, t = 0;
@@ -138,6 +142,56 @@ bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double ma
   out.points.push_back({0.5 * ((p + s * d) + (q + t * e)), -sep,
                         mixFeature(mixFeature(3u, std::uint32_t(ea)), std::uint32_t(eb))});
   return true;
+}
+
+namespace {
+
+// The two vertices of `piece` highest along n, when they stand clear of the rest by more than
+// `clear`: the piece's support feature along n is then the edge between them. -1 when it is not.
+std::pair<int, int> supportEdge(const HullView& piece, const Eigen::Vector3d& n, double clear) {
+  int first = -1, second = -1;
+  for (int v = 0; v < piece.vertexCount(); ++v) {
+    const double h = n.dot(piece.vertices[v]);
+    if (first < 0 || h > n.dot(piece.vertices[first])) second = first, first = v;
+    else if (second < 0 || h > n.dot(piece.vertices[second])) second = v;
+  }
+  if (second < 0) return {-1, -1};
+  const double low = n.dot(piece.vertices[second]);
+  for (int v = 0; v < piece.vertexCount(); ++v)
+    if (v != first && v != second && n.dot(piece.vertices[v]) > low - clear) return {-1, -1};
+  return {std::min(first, second), std::max(first, second)};
+}
+
+}  // namespace
+
+bool edgeOverlapContact(const HullView& a, int a0, int a1, const HullView& b, int b0, int b1,
+                        const Eigen::Vector3d& n, ContactManifold& out) {
+  const Eigen::Vector3d p = a.vertices[a0], d = a.vertices[a1] - p;
+  const Eigen::Vector3d q = b.vertices[b0], e = b.vertices[b1] - q;
+  const Eigen::Vector3d along = d.normalized();
+  const double de = along.dot(e);
+  if (!(along.cross(e).norm() <= kAbsTolerance * e.norm())) return false;   // not parallel
+  // The overlap of the two edges along their common direction: its ends are the contact's points.
+  const double pa0 = along.dot(p), pa1 = pa0 + d.norm(), pb0 = along.dot(q), pb1 = pb0 + de;
+  const double lo = std::max(pa0, std::min(pb0, pb1)), hi = std::min(pa1, std::max(pb0, pb1));
+  if (!(hi >= lo)) return false;   // end to end: no overlap along the line
+  std::vector<ContactPoint> points;
+  for (int end = 0; end < (hi > lo ? 2 : 1); ++end) {
+    const double t = end == 0 ? lo : hi;
+    const Eigen::Vector3d on_a = p + ((t - pa0) / d.norm()) * d, on_b = q + ((t - pb0) / de) * e;
+    points.push_back({0.5 * (on_a + on_b), n.dot(on_a - on_b),
+                      mixFeature(mixFeature(mixFeature(6u, std::uint32_t(a0)), std::uint32_t(b0)), std::uint32_t(end))});
+  }
+  out.normal = n;
+  out.points = std::move(points);
+  return true;
+}
+
+bool parallelEdgeContact(const HullView& a, const HullView& b, const Eigen::Vector3d& n, double clear,
+                         ContactManifold& out) {
+  const auto [a0, a1] = supportEdge(a, n, clear);
+  const auto [b0, b1] = supportEdge(b, -n, clear);
+  return a0 >= 0 && b0 >= 0 && edgeOverlapContact(a, a0, a1, b, b0, b1, n, out);
 }
 
 }  // namespace tumble::narrow

@@ -89,6 +89,17 @@ bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool re
                  double margin, ContactManifold& out);
 bool edgeContact(const HullView& a, int ea, const HullView& b, int eb, double margin,
                  ContactManifold& out);
+// The overlap of edge (a0, a1) of A and edge (b0, b1) of B, when they are within kAbsTolerance of
+// parallel: a point at each end of it, with n as the normal and the depth along n at each end.
+// false (and `out` untouched) when they are not parallel or do not overlap.
+bool edgeOverlapContact(const HullView& a, int a0, int a1, const HullView& b, int b0, int b1,
+                        const Eigen::Vector3d& n, ContactManifold& out);
+// Two pieces whose support features along n (A's highest, B's lowest) are parallel edges, each
+// standing clear of its piece's other vertices by more than `clear`: the contact is the overlap of
+// the two edges, one point at each end, with n as the normal and the depth along n at each end.
+// false (and `out` untouched) when either feature is not an edge or they do not overlap.
+bool parallelEdgeContact(const HullView& a, const HullView& b, const Eigen::Vector3d& n, double clear,
+                         ContactManifold& out);
 
 // distance.cpp: the distance between A and B (0 when they overlap) and a closest point of each,
 // by GJK; exact to rounding for separated pieces.

@@ -247,10 +247,17 @@ void keepAxis(const Choice& c, SatCache& cache) {
 // vertex deepest along a face normal, outside that face) with that axis's normal and gap: a
 // speculative contact there stops a body that would have passed. Their contact is the one point
 // they are closest at, along the direction between the two closest points, with the true distance.
-void closestPointContact(const PieceDistance& d, ContactManifold& out) {
-  out.normal = (d.point_b - d.point_a) / d.distance;
-  out.points.assign(1, {0.5 * (d.point_a + d.point_b), -d.distance, narrow::mixFeature(4u, 0u)});
+// Unless the features closest along that direction are two parallel edges (a tent's two cards
+// parted at the ridge): then a point at each end of their overlap, or the pair would meet at one
+// end of a line contact and be turned about it. Their normal turns as they move all the same
+// (edges passing beside each other, not towards), so they are closest points too.
+void closestPointContact(const PieceDistance& d, const PairView& p, ContactManifold& out) {
   out.closest_points = true;
+  const Eigen::Vector3d n = (d.point_b - d.point_a) / d.distance;
+  const double abs_tol = narrow::kAbsTolerance * std::min(p.a.hull->size, p.b.hull->size);
+  if (narrow::parallelEdgeContact(p.a, p.b, n, abs_tol, out)) return;
+  out.normal = n;
+  out.points.assign(1, {0.5 * (d.point_a + d.point_b), -d.distance, narrow::mixFeature(4u, 0u)});
 }
 
 // Two pieces touching along edges that are parallel (the ridge of a tent of two leaning cards,
@@ -274,6 +281,11 @@ void shareEdgeNormal(const SatResult& r, const PairView& p, const Choice& c, Con
   // right angle apart do not meet at a shared edge line.
   if (na.dot(nb) > kOppositeFaces || na.dot(nb) < 0) return;
   const Eigen::Vector3d n = (na + nb).normalized();
+  // The touching features are two parallel edges (a card's ridge edge on the other's): the contact
+  // is their overlap, a point at each end. Clipping one face against the other cannot give it
+  // reliably: the incident edge lies on the reference face's boundary, where rounding keeps or
+  // drops its ends and cuts it at arbitrary places (a tent's 64 mm ridge held at one end only).
+  if (narrow::parallelEdgeContact(p.a, p.b, n, abs_tol, m)) return;
   double low_b = INFINITY, high_a = -INFINITY;
   for (int v = 0; v < p.b.vertexCount(); ++v) low_b = std::min(low_b, n.dot(p.b.vertices[v]));
   for (int v = 0; v < p.a.vertexCount(); ++v) high_a = std::max(high_a, n.dot(p.a.vertices[v]));
@@ -327,7 +339,7 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
     const PieceDistance d = narrow::distance(p.a, p.b);
     if (d.distance > margin_m) return false;
     if (d.distance > sat_sep + narrow::kDepthAgreement * std::min(p.a.hull->size, p.b.hull->size)) {
-      closestPointContact(d, out);
+      closestPointContact(d, p, out);
       toWorld(*p.to_world, out);
       return true;
     }

@@ -6,15 +6,31 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "base/image.h"
+
 namespace tumble {
 
+// How a mesh is shaded. Facets: the normal of each triangle's first corner over the whole
+// triangle (convex pieces, the built-in shapes; the look the golden frames pin). Surface: normals
+// interpolated across triangles and the albedo read from a texture, for meshes as a file holds them.
+enum class MeshShading { Facets, Surface };
+
 // A triangle soup: one normal per triangle (flat shading per convex face), or one per corner (a
-// smooth surface: a sphere, a capsule).
+// smooth surface: a sphere, a capsule, an imported mesh's own normals).
 struct DrawMesh {
   std::vector<Eigen::Vector3f> positions;   // 3 per triangle, counter-clockwise seen from outside
   std::vector<Eigen::Vector3f> normals;     // outward unit: 1 per triangle, or 1 per position
+  MeshShading shading = MeshShading::Facets;
+  // Surface only: texture coordinates per position (OpenGL's: v = 0 at the image's bottom row),
+  // or none; and the albedo texture (an index returned by Renderer::addTexture), or -1 for none.
+  // The albedo is the texture's colour times the instance's.
+  std::vector<Eigen::Vector2f> uvs;
+  int texture = -1;
   bool smooth() const { return !positions.empty() && normals.size() == positions.size(); }
 };
+
+// An albedo texture: sRGB-encoded colour (alpha unused: bodies are opaque), top row first.
+using DrawTexture = RgbaImage;
 
 struct DrawInstance {
   int mesh = 0;                                       // index returned by Renderer::addMesh

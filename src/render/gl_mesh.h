@@ -1,5 +1,6 @@
-// One uploaded DrawMesh: a vertex buffer of flat-shaded triangles (each triangle's normal copied to
-// its three corners, since GL has no per-primitive attributes) in its own vertex array object.
+// One uploaded DrawMesh: a vertex buffer of triangles (a flat triangle's normal copied to its three
+// corners, since GL has no per-primitive attributes; a Surface mesh's texture coordinates beside
+// them) in its own vertex array object.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,11 +16,13 @@ enum AttributeLocation : GLuint {
   kNormalLocation = 1,
   kModelColumn0Location = 2,  // per instance: 4 columns of the model matrix, locations 2..5
   kColourLocation = 6,        // per instance: linear RGB albedo
+  kTexCoordLocation = 7,      // Surface meshes: texture coordinates
 };
 
 class GlMesh {
  public:
-  // Throws Error(BadInput) if the normals do not match the triangle count.
+  // Throws Error(BadInput) if the normals do not match the triangle count, or the texture
+  // coordinates the positions.
   explicit GlMesh(const DrawMesh& mesh);
   ~GlMesh();
   GlMesh(const GlMesh&) = delete;
@@ -29,6 +32,8 @@ class GlMesh {
   // instance `first` (GL 3.3 has no base-instance draw, so the offset goes in the pointers).
   void bindWithInstances(GLuint instance_buffer, std::size_t first) const;
   GLsizei vertexCount() const { return vertex_count_; }
+  MeshShading shading() const { return shading_; }
+  int texture() const { return texture_; }   // Renderer::addTexture index, -1 for none
 
   // A sphere around the mesh in mesh coordinates, for fitting the shadow map.
   const Eigen::Vector3f& boundCentre() const { return bound_centre_; }
@@ -37,6 +42,8 @@ class GlMesh {
  private:
   GLuint vao_ = 0, vbo_ = 0;
   GLsizei vertex_count_ = 0;
+  MeshShading shading_ = MeshShading::Facets;
+  int texture_ = -1;
   Eigen::Vector3f bound_centre_ = Eigen::Vector3f::Zero();
   float bound_radius_ = 0;
 };

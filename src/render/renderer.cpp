@@ -1,12 +1,17 @@
 // The OSMesa renderer: owns the context and GL objects, and runs the frame as
-//   shadow pass (bodies' depth from the shadow light) -> lit pass (ground, bodies) -> resolve.
+//   shadow pass (bodies' depth from the shadow light) -> lit pass (faceted bodies, bodies drawn as
+//   their files hold them, ground) -> resolve.
 #include "render/renderer.h"
+
+#include <optional>
+#include <string>
 
 #include "base/error.h"
 #include "render/camera_matrices.h"
 #include "render/gl_check.h"
 #include "render/gl_mesh.h"
 #include "render/gl_program.h"
+#include "render/gl_texture.h"
 #include "render/instance_data.h"
 #include "render/lighting.h"
 #include "render/osmesa_context.h"
@@ -26,6 +31,7 @@ class GlRenderer final : public Renderer {
   explicit GlRenderer(const RenderConfig& config);
   ~GlRenderer() override;
 
+  int addTexture(const DrawTexture& texture) override;
   int addMesh(const DrawMesh& mesh) override;
   void draw(const DrawFrame& frame) override;
   void readBack(RgbImage& out) override;
@@ -37,7 +43,10 @@ class GlRenderer final : public Renderer {
                   const Eigen::Matrix4f& view_proj);
   void drawBodies(const DrawFrame& frame, const FrameLighting& lit,
                   const Eigen::Matrix4f& view_proj);
-  void drawBatches() const;
+  void drawSurfaces(const DrawFrame& frame, const FrameLighting& lit, const Eigen::Matrix4f& view_proj);
+  // Draws the batches whose mesh has the given shading (all of them when none is given).
+  void drawBatches(std::optional<MeshShading> only = std::nullopt) const;
+  bool hasBatches(MeshShading shading) const;
 
   RenderConfig config_;
   OsmesaContext context_;  // first member: GL objects below are deleted while it still exists
@@ -45,6 +54,8 @@ class GlRenderer final : public Renderer {
   std::unique_ptr<ShadowMap> shadow_map_;
   std::unique_ptr<ShaderPrograms> programs_;
   std::vector<std::unique_ptr<GlMesh>> meshes_;
+  std::vector<std::unique_ptr<GlTexture>> textures_;
+  std::unique_ptr<GlTexture> white_;    // the albedo map of Surface meshes without a texture
   std::vector<BoundingSphere> mesh_bounds_;
   GLuint instance_buffer_ = 0, ground_vao_ = 0, ground_vbo_ = 0;
   PackedInstances packed_;              // reused each frame to avoid reallocating
@@ -58,6 +69,7 @@ GlRenderer::GlRenderer(const RenderConfig& config) : config_(config) {
   programs_ = std::make_unique<ShaderPrograms>(config.shader_dir);
   glGenBuffers(1, &instance_buffer_);
   createGround();
+  white_ = std::make_unique<GlTexture>(DrawTexture{1, 1, {255, 255, 255, 255}});
   throwIfGlError("setting up the renderer");
 }
 
@@ -71,6 +83,8 @@ GlRenderer::~GlRenderer() {
   glDeleteBuffers(1, &ground_vbo_);
   glDeleteVertexArrays(1, &ground_vao_);
   meshes_.clear();
+  textures_.clear();
+  white_.reset();
   programs_.reset();
   shadow_map_.reset();
   targets_.reset();
@@ -89,8 +103,18 @@ void GlRenderer::createGround() {
   glBindVertexArray(0);
 }
 
+int GlRenderer::addTexture(const DrawTexture& texture) {
+  context_.makeCurrent();
+  textures_.push_back(std::make_unique<GlTexture>(texture));
+  throwIfGlError("uploading a texture");
+  return static_cast<int>(textures_.size()) - 1;
+}
+
 int GlRenderer::addMesh(const DrawMesh& mesh) {
   context_.makeCurrent();
+  if (mesh.texture >= static_cast<int>(textures_.size()) || mesh.texture < -1)
+    throw Error(ExitCode::BadInput, "render mesh refers to texture " + std::to_string(mesh.texture) + " but only " +
+                                        std::to_string(textures_.size()) + " textures were added");
   auto gl_mesh = std::make_unique<GlMesh>(mesh);
   mesh_bounds_.push_back({gl_mesh->boundCentre(), gl_mesh->boundRadius()});
   meshes_.push_back(std::move(gl_mesh));
@@ -121,6 +145,7 @@ void GlRenderer::draw(const DrawFrame& frame) {
   shadow_map_->bindTexture(GL_TEXTURE0);
   // Bodies first: the ground behind them then fails the depth test instead of being shaded.
   drawBodies(frame, lit, view_proj);
+  drawSurfaces(frame, lit, view_proj);
   if (frame.ground.present) drawGround(frame, lit, view_proj);
   targets_->resolve();
   // llvmpipe queues the work and rasterises on its own threads; finishing here makes draw() own
@@ -165,7 +190,7 @@ void GlRenderer::drawGround(const DrawFrame& frame, const FrameLighting& lit,
 
 void GlRenderer::drawBodies(const DrawFrame& frame, const FrameLighting& lit,
                             const Eigen::Matrix4f& view_proj) {
-  if (packed_.batches.empty()) return;
+  if (!hasBatches(MeshShading::Facets)) return;
   // Triangles are counter-clockwise seen from outside, so back faces are never visible on
   // closed bodies: culling them halves the fragment work.
   glEnable(GL_CULL_FACE);
@@ -174,13 +199,43 @@ void GlRenderer::drawBodies(const DrawFrame& frame, const FrameLighting& lit,
   program.use();
   applyLighting(program, frame, lit);
   glUniformMatrix4fv(program.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
-  drawBatches();
+  drawBatches(MeshShading::Facets);
 }
 
-void GlRenderer::drawBatches() const {
+// Meshes as imported: their own program, and each batch's albedo texture on unit 1 (unit 0 holds
+// the shadow map). Back faces are culled as for the bodies: files give closed meshes
+// counter-clockwise from outside (glTF requires it, OBJ and others follow it).
+void GlRenderer::drawSurfaces(const DrawFrame& frame, const FrameLighting& lit,
+                              const Eigen::Matrix4f& view_proj) {
+  if (!hasBatches(MeshShading::Surface)) return;
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  const GlProgram& program = programs_->surface(lit.variant());
+  program.use();
+  applyLighting(program, frame, lit);
+  glUniformMatrix4fv(program.uniform("u_view_proj"), 1, GL_FALSE, view_proj.data());
+  glUniform1i(program.uniform("u_albedo_map"), 1);
   for (const InstanceBatch& batch : packed_.batches) {
     const GlMesh& mesh = *meshes_[static_cast<std::size_t>(batch.mesh)];
-    if (mesh.vertexCount() == 0) continue;
+    if (mesh.shading() != MeshShading::Surface || mesh.vertexCount() == 0) continue;
+    (mesh.texture() >= 0 ? *textures_[static_cast<std::size_t>(mesh.texture())] : *white_).bind(GL_TEXTURE1);
+    mesh.bindWithInstances(instance_buffer_, batch.first);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, mesh.vertexCount(), static_cast<GLsizei>(batch.count));
+  }
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+bool GlRenderer::hasBatches(MeshShading shading) const {
+  for (const InstanceBatch& batch : packed_.batches)
+    if (meshes_[static_cast<std::size_t>(batch.mesh)]->shading() == shading) return true;
+  return false;
+}
+
+void GlRenderer::drawBatches(std::optional<MeshShading> only) const {
+  for (const InstanceBatch& batch : packed_.batches) {
+    const GlMesh& mesh = *meshes_[static_cast<std::size_t>(batch.mesh)];
+    if (mesh.vertexCount() == 0 || (only && mesh.shading() != *only)) continue;
     mesh.bindWithInstances(instance_buffer_, batch.first);
     glDrawArraysInstanced(GL_TRIANGLES, 0, mesh.vertexCount(),
                           static_cast<GLsizei>(batch.count));

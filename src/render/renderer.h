@@ -1,5 +1,6 @@
 // Off-screen renderer: OSMesa core-profile context, GLSL from shaders/, Blinn-Phong with flat
-// normals, one shadow-mapped directional light, optional 4x MSAA, sRGB (gamma-correct) output.
+// normals (or a mesh file's own normals and albedo texture), one shadow-mapped directional light,
+// optional 4x MSAA, sRGB (gamma-correct) output.
 #pragma once
 
 #include <cstdint>
@@ -26,7 +27,11 @@ class Renderer {
   static std::unique_ptr<Renderer> create(const RenderConfig& config);
   virtual ~Renderer() = default;
 
-  // Uploads a mesh once; instances refer to it by the returned index.
+  // Uploads a texture once (mipmapped, sampled as sRGB); meshes refer to it by the returned index.
+  // Throws Error(BadInput) for an empty image or one larger than the GL allows.
+  virtual int addTexture(const DrawTexture& texture) = 0;
+  // Uploads a mesh once; instances refer to it by the returned index. Its texture, if any, must
+  // have been added.
   virtual int addMesh(const DrawMesh& mesh) = 0;
   // Renders into the off-screen framebuffer (shadow pass, then the lit pass, then MSAA resolve).
   virtual void draw(const DrawFrame& frame) = 0;

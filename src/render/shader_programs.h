@@ -31,6 +31,8 @@ class ShaderPrograms {
   const GlProgram& ground(const LightingVariant& variant) {
     return get(ground_, "ground", variant);
   }
+  // Meshes drawn with MeshShading::Surface: interpolated normals and an albedo texture.
+  const GlProgram& surface(const LightingVariant& variant) { return get(surface_, "surface", variant); }
   const GlProgram& shadow() const { return *shadow_; }
 
  private:
@@ -38,7 +40,7 @@ class ShaderPrograms {
   const GlProgram& get(Cache& cache, const char* name, const LightingVariant& variant);
 
   ShaderSource source_;
-  Cache lit_, ground_;
+  Cache lit_, ground_, surface_;
   std::unique_ptr<GlProgram> shadow_;
 };
 

@@ -158,6 +158,12 @@ std::string readChoice(ObjectReader& in, const std::string& key, const std::stri
   in.fail(key, message);
 }
 
+BodyDraw readBodyDraw(ObjectReader& in, BodyDraw fallback) {
+  return readChoice(in, "draw", fallback == BodyDraw::Hulls ? "hulls" : "visual", {"visual", "hulls"}) == "hulls"
+             ? BodyDraw::Hulls
+             : BodyDraw::Visual;
+}
+
 Integrator readIntegrator(ObjectReader& in, const std::string& key, Integrator fallback) {
   std::string name = readChoice(in, key, fallback == Integrator::Rk4 ? "rk4" : "semi_implicit_euler",
                                 {"rk4", "semi_implicit_euler"});
@@ -194,6 +200,11 @@ BodySpec readBody(ObjectReader& in, int index, const std::filesystem::path& scen
   // The ground defaults to a neutral grey; bodies to a warm orange that reads against it.
   Eigen::Vector3d fallback = body.shape == ShapeKind::Plane ? Eigen::Vector3d(0.62, 0.62, 0.62) : body.colour_srgb;
   body.colour_srgb = in.colour("color", in.colour("colour", fallback));
+  body.colour_given = in.has("color") || in.has("colour");
+  if (in.has("draw")) {
+    if (body.shape == ShapeKind::Plane) in.fail("draw", "the ground plane is drawn as a checkerboard; it takes no \"draw\"");
+    body.draw = readBodyDraw(in, BodyDraw::Visual);
+  }
   in.rejectUnknownKeys();
   return body;
 }

@@ -25,6 +25,9 @@ std::string readChoice(ObjectReader& in, const std::string& key, const std::stri
 // Refuses control characters (NUL above all) in a path written in the scene.
 void checkPathText(ObjectReader& in, const std::string& key, const std::string& path);
 
+// "draw": "visual" | "hulls".
+BodyDraw readBodyDraw(ObjectReader& in, BodyDraw fallback);
+
 Integrator readIntegrator(ObjectReader& in, const std::string& key, Integrator fallback);
 
 }  // namespace tumble

@@ -52,6 +52,8 @@ class ObjectReader {
   Eigen::Vector3d colour(const std::string& key, const Eigen::Vector3d& fallback);
   std::optional<ObjectReader> optionalObject(const std::string& key);
   const nlohmann::json* optionalArray(const std::string& key);
+  // The member as it is, of any type (for a field that takes more than one), or null.
+  const nlohmann::json* optionalValue(const std::string& key) { return get(key); }
   // Element i of the array `key` (read with optionalArray first), as an object.
   ObjectReader element(const std::string& key, std::size_t i);
 

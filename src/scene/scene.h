@@ -29,6 +29,10 @@ struct PieceSpec {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
+// What the renderer shows of a body: its visual mesh (for a mesh body, the file's meshes with their
+// materials; for the built-in shapes, the shape) or its convex collision pieces, for teaching.
+enum class BodyDraw { Visual, Hulls };
+
 struct BodySpec {
   std::string name;
   ShapeKind shape = ShapeKind::Box;
@@ -56,14 +60,44 @@ struct BodySpec {
   double youngs_modulus_pa = 1e8;                      // Pa, > 0 (the penalty model's stiffness)
   double poisson_ratio = 0.3;                          // (-1, 0.5)
   Eigen::Vector3d colour_srgb{0.8, 0.45, 0.2};         // 0..1, as a colour picker shows it
+  bool colour_given = false;                           // the scene set it: it replaces a mesh file's
+                                                       // colours and textures
+  std::optional<BodyDraw> draw;                        // unset: the render section's default
+};
+
+// A body a camera names ("follow", "fit", an orbit's "target"), and where, for the check that it
+// exists once the bodies are read.
+struct CameraBodyRef {
+  std::string name;
+  std::string pointer;                                 // JSON pointer of the name in the file
 };
 
 struct CameraSpec {
+  // Fixed: a position and a look-at point or orientation. Orbit: about a point or a body, at a
+  // distance, yaw and pitch. Follow: a body, from an offset, critically damped. Fit: the whole
+  // motion of some bodies, seen from a yaw and pitch.
+  enum class Form { Fixed, Orbit, Follow, Fit };
+  Form form = Form::Fixed;
+  std::string name;                                    // in "cameras"; empty for "camera"
   Eigen::Vector3d position_m{6, -8, 4};
   std::optional<Eigen::Vector3d> look_at_m = Eigen::Vector3d(0, 0, 0.5);
   std::optional<Eigen::Quaterniond> orientation;       // camera looks along its -z, up its +y
   Eigen::Vector3d up{0, 0, 1};
   double fov_y_deg = 45;
+  // Orbit, and the direction a Fit camera looks from. yaw 0 puts the camera on the target's -y
+  // side (Blender's front view); positive yaw turns it counter-clockwise seen from above; positive
+  // pitch raises it.
+  Eigen::Vector3d target_m{0, 0, 0.5};
+  std::string target_body;                             // orbit this body's centre of mass instead
+  double distance_m = 10;                              // m, > 0
+  double yaw_deg = 30, pitch_deg = 20;
+  // Follow.
+  std::string follow_body;
+  Eigen::Vector3d offset_m{0, -4, 1};                  // m, world frame, from the body's centre of mass
+  double smoothing_s = 0.3;                            // s: the critically damped lag's time constant
+  // Fit: these bodies (empty: every body but the ground) over the whole clip.
+  std::vector<std::string> fit_bodies;
+  std::vector<CameraBodyRef> body_refs;                // every body named above
 };
 
 struct DirectionalLightSpec {
@@ -87,6 +121,7 @@ struct RenderSpec {
   int shadow_map_size = 2048;                          // texels per side
   Eigen::Vector3d background_srgb{0.80, 0.86, 0.93};
   int crf = 23;                                        // H.264 quality
+  BodyDraw draw = BodyDraw::Visual;                    // for bodies that do not say
 };
 
 // The simulation's settings are dynamics/settings.h's, filled straight from the file; a scene
@@ -106,7 +141,8 @@ struct Scene {
   std::string name;                                    // file stem: default output names
   int schema_version = 1;
   std::vector<BodySpec> bodies;
-  CameraSpec camera;
+  CameraSpec camera;                                   // "camera", else the first of "cameras"
+  std::vector<CameraSpec> cameras;                     // "cameras": named, picked by --camera
   LightingSpec lighting;
   RenderSpec render;
   SimulationSpec simulation;

@@ -8,7 +8,9 @@
 
 #include "base/error.h"
 #include "scene/body_reader.h"
+#include "scene/camera_reader.h"
 #include "scene/object_reader.h"
+#include "scene/scene_overrides.h"
 
 namespace tumble {
 namespace {
@@ -43,7 +45,7 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   r.fps = in.integer("fps", r.fps, 1, 1000);
   auto duration = in.optionalNumber("duration_s", {0, kMaxFrames / double(r.fps), true, false});
   if (duration && in.has("frames")) in.fail("frames", "give either \"duration_s\" or \"frames\", not both");
-  if (duration) r.frames = std::max(1, static_cast<int>(std::lround(*duration * r.fps)));
+  if (duration) r.frames = framesForDuration(*duration, r.fps);
   r.frames = in.integer("frames", r.frames, 1, kMaxFrames);
   r.samples = in.integer("samples", r.samples, 1, 4);
   if (r.samples == 3) in.fail("samples", "MSAA takes 1, 2 or 4 samples");
@@ -52,6 +54,7 @@ void readRender(ObjectReader& in, RenderSpec& r) {
   if (in.has("background") && in.has("background_color"))
     in.fail("background_color", "give \"background\" or \"background_color\", not both");
   r.background_srgb = in.colour("background", in.colour("background_color", r.background_srgb));
+  r.draw = readBodyDraw(in, r.draw);
   in.rejectUnknownKeys();
 }
 
@@ -164,26 +167,6 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
                         " steps; use a larger step or fewer frames");
   sim.steps_per_frame = static_cast<int>(whole);
   step.dt = interval / whole;
-  in.rejectUnknownKeys();
-}
-
-void readCamera(ObjectReader& in, CameraSpec& cam) {
-  cam.position_m = in.vector3("position_m", cam.position_m);
-  bool has_look = in.has("look_at_m");
-  bool has_quat = in.has("quat_wxyz") || in.has("rotation_deg");
-  if (has_look && has_quat) in.fail("look_at_m", "give \"look_at_m\" or an orientation, not both");
-  if (has_quat) {
-    cam.orientation = readOrientation(in);
-    cam.look_at_m.reset();
-  } else {
-    cam.look_at_m = in.vector3("look_at_m", *cam.look_at_m);
-    if ((*cam.look_at_m - cam.position_m).norm() < 1e-9)
-      in.fail("look_at_m", "the camera cannot look at its own position");
-    readOrientation(in);  // marks the orientation keys as known
-  }
-  cam.up = in.vector3("up", cam.up, {-1e6, 1e6});
-  if (cam.up.norm() < 1e-12) in.fail("up", "the up vector cannot be zero");
-  cam.fov_y_deg = in.number("fov_y_deg", cam.fov_y_deg, {0, 180, true, true});
   in.rejectUnknownKeys();
 }
 
@@ -314,12 +297,13 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
     ObjectReader defaults(ctx, empty, "/simulation");
     readSimulation(defaults, scene.simulation, scene.render.fps, scene.render.frames);
   }
-  if (auto c = root.optionalObject("camera")) readCamera(*c, scene.camera);
+  readCameras(root, scene);
   if (const nlohmann::json* lights = root.optionalArray("lights")) readLights(root, *lights, scene.lighting, ctx);
   else scene.lighting.directional.assign(1, DirectionalLightSpec{});
   scene.output = root.optionalString("output");
   if (scene.output) checkSceneOutput(root, *scene.output);
   readBodies(root, ctx, scene);
+  checkCameraBodies(scene, ctx);
   root.rejectUnknownKeys();
   return scene;
 }

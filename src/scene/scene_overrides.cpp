@@ -45,12 +45,18 @@ void setContactModel(Scene& scene, ContactModel model, const std::string& flag) 
   scene.simulation.step.model = model;
 }
 
+int framesForDuration(double duration_s, int fps) {
+  return std::max(1, static_cast<int>(std::lround(duration_s * fps)) + 1);
+}
+
+double durationOfFrames(int frames, int fps) { return (frames - 1) / double(fps); }
+
 void setFrameRate(Scene& scene, int fps) {
   if (fps < 1 || fps > 1000) usage("--fps: " + std::to_string(fps) + " is outside [1, 1000]");
-  double duration = scene.render.frames / double(scene.render.fps);
+  double duration = durationOfFrames(scene.render.frames, scene.render.fps);
   double dt = scene.simulation.step.dt;
   scene.render.fps = fps;
-  scene.render.frames = std::max(1, static_cast<int>(std::lround(duration * fps)));
+  scene.render.frames = framesForDuration(duration, fps);
   long whole = std::max(1L, std::lround(1.0 / fps / dt));
   scene.simulation.steps_per_frame = static_cast<int>(whole);
   scene.simulation.step.dt = 1.0 / fps / whole;
@@ -60,7 +66,7 @@ void setFrameRate(Scene& scene, int fps) {
 void setDuration(Scene& scene, double duration_s) {
   if (!(duration_s > 0) || duration_s * scene.render.fps > 1e6)
     usage("--duration: must be positive and at most 1000000 frames long");
-  scene.render.frames = std::max(1, static_cast<int>(std::lround(duration_s * scene.render.fps)));
+  scene.render.frames = framesForDuration(duration_s, scene.render.fps);
   checkTotalSteps(scene, "--duration");
 }
 

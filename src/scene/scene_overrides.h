@@ -9,6 +9,13 @@
 
 namespace tumble {
 
+// The frames of a clip of `duration_s` at `fps`: frame k shows the instant (k - 1) / fps, so the
+// clip takes round(duration_s * fps) + 1 frames, the first at t = 0 and the last at the duration
+// (a 2 s clip at 30 fps: 61 frames, t = 0 .. 2 s).
+int framesForDuration(double duration_s, int fps);
+// The time the last of `frames` frames shows: (frames - 1) / fps.
+double durationOfFrames(int frames, int fps);
+
 // Chooses the whole number of steps per frame closest to interval / dt and makes dt divide the
 // frame interval exactly. Throws Error(Usage) when `dt_s` is not within 0.1 % of such a step.
 void setTimeStep(Scene& scene, double dt_s, const std::string& flag);

@@ -70,6 +70,39 @@ TEST_CASE("renders match the golden frames at the golden tolerance", "[golden]")
   CHECK_THAT(cube.output, Catch::Contains("3 frames compared, 0 failed"));
 }
 
+TEST_CASE("meshes drawn as their files hold them match their golden frames", "[golden][visual]") {
+  // A textured glTF, an OBJ coloured by its MTL (Kd and a map_Kd file) and a torus whose hole
+  // shows the ground: the same scenes and frames tools/update-golden renders.
+  fs::path dir = freshDir("visual");
+  for (const char* name : {"visual_textured_gltf", "visual_mtl_obj", "visual_torus"}) {
+    auto r = runTumble("render " + kSource + "/tests/scenes/" + name + ".json --size 160x120 --samples 4 --frames 1,5 -y -o " +
+                       (dir / name).string() + "/ --check-against " + kSource + "/tests/golden/" + name + kTolerance);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.output, Catch::Contains("2 frames compared, 0 failed"));
+  }
+}
+
+TEST_CASE("a follow and an orbit camera match their golden frames", "[golden][camera]") {
+  fs::path dir = freshDir("cameras");
+  for (const char* name : {"follow", "orbit"}) {
+    auto r = runTumble("render " + kSource + "/tests/scenes/cameras.json --camera " + name +
+                       " --size 160x120 --samples 4 --frames 1,5,10 -y -o " + (dir / name).string() + "/ --check-against " +
+                       kSource + "/tests/golden/camera_" + name + kTolerance);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.output, Catch::Contains("3 frames compared, 0 failed"));
+  }
+}
+
+TEST_CASE("a follow camera's frame is the same whichever frames are rendered", "[golden][camera]") {
+  // Its lag depends on every frame before: each frame's camera comes from the whole motion.
+  fs::path dir = freshDir("follow_alone");
+  const std::string scene = kSource + "/tests/scenes/cameras.json --camera follow" + kRender.substr(0, kRender.find(" --frames"));
+  REQUIRE(runTumble("render " + scene + " --frames 1..10 -q -y -o " + (dir / "all/").string()).exit_code == 0);
+  REQUIRE(runTumble("render " + scene + " --frames 10 -q -y -o " + (dir / "alone/").string()).exit_code == 0);
+  CHECK(readFile(dir / "all" / "frame_0010.png") == readFile(dir / "alone" / "frame_0010.png"));
+  CHECK(readFile(dir / "all" / "frame_0010.png") != readFile(dir / "all" / "frame_0009.png"));
+}
+
 TEST_CASE("the same frame rendered by two processes is bit-identical", "[golden]") {
   fs::path dir = freshDir("twice");
   REQUIRE(runTumble("render " + kScene + kRender + (dir / "a/").string()).exit_code == 0);

@@ -74,7 +74,8 @@ bool hiddenFileIn(const fs::path& dir) {
   return false;
 }
 
-// 3000 frames: minutes of work, so the signal always arrives in the middle of the render.
+// 3001 frames (300 s at 10 fps, t = 0 .. 300 s): minutes of work, so the signal always arrives in
+// the middle of the render.
 const std::string kScene = std::string(TUMBLE_SOURCE_DIR) + "/tests/scenes/small_box.json";
 
 }  // namespace
@@ -86,9 +87,9 @@ TEST_CASE("SIGINT during a PNG render keeps the frames so far and exits 130", "[
   ::kill(c.pid, SIGINT);
   CHECK(finish(c) == 130);
   std::string log = text(dir / "log");
-  CHECK_THAT(log, Catch::Contains("tumble: interrupted after ") && Catch::Contains(" of 3000 frames"));
+  CHECK_THAT(log, Catch::Contains("tumble: interrupted after ") && Catch::Contains(" of 3001 frames"));
   CHECK(fs::exists(dir / "f_0001.png"));
-  CHECK_FALSE(fs::exists(dir / "f_3000.png"));
+  CHECK_FALSE(fs::exists(dir / "f_3001.png"));
   CHECK_FALSE(hiddenFileIn(dir.path()));   // no half-written frame
 }
 

@@ -72,8 +72,8 @@ TEST_CASE("a trajectory lacking a frame asked for, or not tumble's, is refused w
   REQUIRE(runTumble("simulate " + kScene + " -q --duration 1 --trajectory " + csv).exit_code == 0);
   auto r = runTumble("render " + kScene + kSmall + " --frames 40 --from-trajectory " + csv + " -o " + (dir / "x.png").string());
   CHECK(r.exit_code == 65);
-  CHECK_THAT(r.output, Catch::Contains("short.csv") && Catch::Contains("frames 1..30") && Catch::Contains("frame 40"));
-  CHECK(runTumble("render " + kScene + kSmall + " --frames 30 --from-trajectory " + csv + " -o " +
+  CHECK_THAT(r.output, Catch::Contains("short.csv") && Catch::Contains("frames 1..31") && Catch::Contains("frame 40"));
+  CHECK(runTumble("render " + kScene + kSmall + " --frames 31 --from-trajectory " + csv + " -o " +
                   (dir / "y.png").string()).exit_code == 0);
 
   std::string steps = (dir / "steps.csv").string();

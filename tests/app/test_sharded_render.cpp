@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kScene = kKnockdown;
-const std::string kFlags = " --duration 1" + kSmallFrames;   // 30 frames (1 s at 30 frames/s)
-constexpr int kFrames = 30;
+const std::string kFlags = " --duration 1" + kSmallFrames;
+constexpr int kFrames = 31;   // 1 s at 30 frames/s: t = 0, 1/30 s, ..., 1 s
 
 // Sets environment variables for the processes this test starts, and removes them after.
 class ScopedEnv {
@@ -74,7 +74,7 @@ TEST_CASE("four chunks from one trajectory give every frame once, each bit-ident
     auto r = runTumble("render " + kScene + kFlags + " --from-trajectory " + csv + " --shards 4" + chunk_out);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    CHECK_THAT(r.output, Catch::Contains("chunk 3 of 4 (JOB_COMPLETION_INDEX=2 of --shards 4): frames 16..22"));
+    CHECK_THAT(r.output, Catch::Contains("chunk 3 of 4 (JOB_COMPLETION_INDEX=2 of --shards 4): frames 16..23"));
   }
   REQUIRE(runTumble("render " + kScene + kFlags + " -q --from-trajectory " + csv + " --shard 4/4" + chunk_out).exit_code == 0);
   int files = 0;
@@ -98,7 +98,7 @@ TEST_CASE("a sharded video goes per chunk, and join makes one video of every fra
                           part(dir, 4) + " " + part(dir, 2));
   INFO(joined.output);
   REQUIRE(joined.exit_code == 0);
-  CHECK_THAT(joined.output, Catch::Contains("joined 4 parts (30 frames)"));
+  CHECK_THAT(joined.output, Catch::Contains("joined 4 parts (31 frames)"));
   DecodedVideo whole = decodeVideo(dir / "clip.mp4");
   REQUIRE(whole.frames.size() == kFrames);
   CHECK(whole.fps == Approx(30));

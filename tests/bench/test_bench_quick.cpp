@@ -1,6 +1,6 @@
 // The whole benchmark in --quick mode, as the README runs it: checks that it finishes, writes its
-// CSV, a plot per scene and the results page, and that every metric of every engine is finite.
-// Never a timing.
+// CSV, a plot per scene (PNG and SVG) and the results page, and that every metric of every engine
+// is finite; then redraws the plots from the CSV. Never a timing.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +8,10 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "bench_test_support.h"
+
+using tumble::bench::testing::fileBytes;
 
 namespace fs = std::filesystem;
 
@@ -24,13 +28,6 @@ std::vector<std::string> splitCsv(const std::string& line) {
   }
   out.push_back(field);
   return out;
-}
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 int runBench(const std::string& args, const std::string& log) {
@@ -67,10 +64,27 @@ TEST_CASE("tumble-bench --quick --docs writes a CSV of finite metrics, a plot pe
   CHECK(rows > 50);
   CHECK(engines.count("tumble") == 1);
   CHECK(scenes.size() == 10);
-  for (const std::string& s : scenes) CHECK(fs::file_size(out / (s + ".png")) > 1000);
+  for (const std::string& s : scenes) {
+    CHECK(fs::file_size(out / (s + ".png")) > 1000);
+    CHECK(fs::file_size(out / (s + ".svg")) > 1000);
+  }
+
+  // --plot-from redraws the plots from the CSV alone, the same bytes in two fresh processes.
+  const fs::path again1 = fs::path(TUMBLE_BINARY_DIR) / "bench-plot-from-1", again2 = fs::path(TUMBLE_BINARY_DIR) / "bench-plot-from-2";
+  fs::remove_all(again1);
+  fs::remove_all(again2);
+  REQUIRE(runBench("--plot-from " + (out / "results.csv").string() + " -o " + again1.string(), "bench-plot-from-1.log") == 0);
+  REQUIRE(runBench("--plot-from " + (out / "results.csv").string() + " -o " + again2.string(), "bench-plot-from-2.log") == 0);
+  CHECK(!fs::exists(again1 / "results.csv"));
+  for (const std::string& s : scenes)
+    for (const char* ext : {".png", ".svg"}) {
+      INFO(s << ext);
+      CHECK(fs::file_size(again1 / (s + ext)) > 1000);
+      CHECK(fileBytes(again1 / (s + ext)) == fileBytes(again2 / (s + ext)));
+    }
 
   // The page: stamped, complete, and a table under the plot of every scene that ran.
-  const std::string page = readAll(out / "results.md");
+  const std::string page = fileBytes(out / "results.md");
   CHECK(page.find("| command | `tumble-bench --quick --docs ") != std::string::npos);
   for (const char* field : {"| date | 2", "| commit | ", "| build type | ", "| machine | ", "| engines | tumble "})
     CHECK(page.find(field) != std::string::npos);

@@ -5,33 +5,21 @@
 #include "bench/machine_info.h"
 #include "bench/results_page.h"
 #include "bench/run_stamp.h"
+#include "bench_test_support.h"
 
 using namespace tumble::bench;
+using testing::madeUpRow;
 
 namespace {
 
-RunResult row(const std::string& scene, const std::string& setting, double dt, double wall,
-              std::vector<Metric> metrics) {
-  RunResult r;
-  r.scene = scene;
-  r.setting = setting;
-  r.engine = setting.substr(0, setting.find('-'));
-  r.dt = dt;
-  r.wall_per_sim = wall;
-  r.reps = 3;
-  r.simulated_s = 2;
-  r.metrics = std::move(metrics);
-  return r;
-}
-
 std::vector<SceneResults> twoScenes() {
   SceneResults drop{makeScene("S1", {1.0 / 60, 1.0 / 240}), {}, {}};
-  drop.rows = {row("S1", "tumble-rk4", 1.0 / 60, 1.2e-4, {{"apex_err", 1.8e-4}}),
-               row("S1", "tumble-rk4", 1.0 / 240, 4.4e-4, {{"apex_err", 1.8e-5}}),
-               row("S1", "bullet", 1.0 / 60, 8.9e-5, {{"apex_err", 0.17}})};
+  drop.rows = {madeUpRow("S1", "tumble-rk4", 1.0 / 60, 1.2e-4, {{"apex_err", 1.8e-4}}),
+               madeUpRow("S1", "tumble-rk4", 1.0 / 240, 4.4e-4, {{"apex_err", 1.8e-5}}),
+               madeUpRow("S1", "bullet", 1.0 / 60, 8.9e-5, {{"apex_err", 0.17}})};
   drop.rows.back().note = "a | in a note";
   SceneResults pile{makeScene("S6_100", {}), {}, {"ode-step: far too slow"}};
-  pile.rows = {row("S6_100", "tumble-ts", 1.0 / 240, 3.1,
+  pile.rows = {madeUpRow("S6_100", "tumble-ts", 1.0 / 240, 3.1,
                    {{"max_pen_end", 9.5e-7}, {"escaped", 0}, {"head_s", 1.65}, {"wall_per_sim_head", 2.87},
                     {"sc_err", 0.1}, {"sc_horizon_s", 1}})};
   pile.rows[0].peak_rss_mb = 7;

@@ -254,6 +254,39 @@ TEST_CASE("parallel edges meeting (a tent's ridge): the normal bisects the two f
   }
 }
 
+// The same ridge, apart, touching and overlapping, and twisted by 1e-4 rad: the two edges touch
+// along their whole 64 mm, so the contact holds them at both ends, one point at y = -32 mm and one at
+// +32 mm, each with its own depth along the normal. Clipping the end face of one card against the
+// other's inner face put the points where rounding cut the edge (one end only, or 2 mm and 24 mm
+// from it), and a ridge held at one end turned the tent about it; the closest points of a pair
+// apart gave one point only.
+TEST_CASE("parallel edges meeting (a tent's ridge): a contact point at each end of the ridge", "[narrow]") {
+  const double t = 0.5e-3, l = 89e-3, lean = 25 * std::numbers::pi / 180, half_width = 32e-3;
+  const ConvexPiece card = makeBox(Vector3d(t / 2, half_width, l / 2));
+  for (const double gap : {1e-5, 1e-7, 0.0, -1e-7}) {
+    for (const double twist : {0.0, 1e-4}) {
+      CAPTURE(gap, twist);
+      const double dx = t / 2 * std::cos(lean) + l / 2 * std::sin(lean) + gap / 2;
+      const auto left = pose({-dx, 0, l / 2}, rotation(lean, Vector3d::UnitY()));
+      const auto right = pose({dx, 0, l / 2}, rotation(twist, Vector3d::UnitX()) * rotation(-lean, Vector3d::UnitY()));
+      SatCache cache;
+      const auto m = collide(card, left, card, right, 1e-4, cache);
+      REQUIRE(m);
+      checkSane(*m);
+      REQUIRE(m->points.size() == 2);
+      const double y0 = m->points[0].position.y(), y1 = m->points[1].position.y();
+      CHECK(std::min(y0, y1) == Approx(-half_width).margin(1e-5));
+      CHECK(std::max(y0, y1) == Approx(half_width).margin(1e-5));
+      CHECK(m->normal.x() > 1 - 1e-6);   // horizontal, from the left card to the right one
+      // the twist turns the right card's edge about the ridge's middle: its ends rise and fall by
+      // 1e-4 * the ridge's lever (the top lies l/2 above the card's centre), along the normal by
+      // sin(lean) of that; untwisted both ends are the gap apart
+      const double spread = twist * (l / 2) * std::sin(lean) * half_width / (l / 2) + 1e-9;
+      for (const ContactPoint& p : m->points) CHECK(p.depth == Approx(-gap).margin(2 * spread + 1e-9));
+    }
+  }
+}
+
 // A 1 m cube tilted by 1e-6 rad under a level 10 m cube resting on it: the small top face's edges
 // touch the large bottom face's inside, so the contact's normal is the large face's, exactly
 // vertical (the small face's, tilted 1e-6 rad, turned a heavy cube's weight into a sideways push).

@@ -72,8 +72,7 @@ SceneRun runScene(const std::string& name, double seconds,
   // whatever it reached. A test that is about sleeping turns it back on in `edit`.
   scene.simulation.step.sleep.enabled = false;
   if (edit) edit(scene);
-  setDuration(scene, seconds);
-  scene.render.frames += 1;   // frame k is at (k-1)/fps: one more frame reaches `seconds`
+  setDuration(scene, seconds);   // the last frame shows `seconds`
   BuiltWorld built = buildWorld(scene);
   SceneRun run;
   SimulationPlan plan{built.step, scene.simulation.steps_per_frame, scene.render.frames};

@@ -216,3 +216,74 @@ TEST_CASE("instances of unknown meshes are refused", "[render]") {
   DrawFrame frame = boxFrame();  // refers to mesh 0, but none was added
   CHECK_THROWS_AS(renderer->draw(frame), Error);
 }
+
+namespace {
+
+// The box as a mesh drawn as a file holds it: interpolated normals, and texture coordinates that
+// spread the texture over the face towards the camera (-y), u along x and v up z.
+DrawMesh texturedBox(int texture) {
+  DrawMesh mesh = test::boxMesh({0.5f, 0.5f, 0.5f});
+  mesh.shading = MeshShading::Surface;
+  mesh.texture = texture;
+  std::vector<Eigen::Vector3f> normals;
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    normals.push_back(mesh.normals[i / 3]);
+    mesh.uvs.emplace_back(mesh.positions[i].x() + 0.5f, mesh.positions[i].z() + 0.5f);
+  }
+  mesh.normals = normals;
+  return mesh;
+}
+
+// 4x4 texels in quadrants, top row first: red | blue over green | yellow.
+DrawTexture quadrantTexture() {
+  DrawTexture t{4, 4, {}};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const bool top = y < 2, left = x < 2;
+      const std::uint8_t r = top == left || (!top && !left) ? 230 : 20;
+      const std::uint8_t g = !top ? 200 : 20;
+      const std::uint8_t b = top && !left ? 230 : 20;
+      t.pixels.insert(t.pixels.end(), {r, g, b, 255});
+    }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a mesh drawn as its file holds it shows its texture the right way up", "[render]") {
+  DrawFrame frame = boxFrame();
+  frame.instances[0].colour = {1, 1, 1};   // the texture's own colours
+  auto renderer = Renderer::create(smallConfig());
+  const int texture = renderer->addTexture(quadrantTexture());
+  renderer->addMesh(texturedBox(texture));
+  renderer->draw(frame);
+  RgbImage img;
+  renderer->readBack(img);
+  const Pixel top_left = atWorld(img, frame, {-0.3f, -0.5f, 1.3f});
+  const Pixel top_right = atWorld(img, frame, {0.3f, -0.5f, 1.3f});
+  const Pixel bottom_left = atWorld(img, frame, {-0.3f, -0.5f, 0.7f});
+  const Pixel bottom_right = atWorld(img, frame, {0.3f, -0.5f, 0.7f});
+  CHECK((top_left.r > 2 * top_left.g && top_left.r > 2 * top_left.b));             // red
+  CHECK((top_right.b > 2 * top_right.r && top_right.b > 2 * top_right.g));         // blue
+  CHECK((bottom_left.g > 2 * bottom_left.r && bottom_left.g > 2 * bottom_left.b)); // green
+  CHECK((bottom_right.r > 2 * bottom_right.b && bottom_right.g > 2 * bottom_right.b));   // yellow
+}
+
+TEST_CASE("a mesh without a texture is drawn in its instance's colour, and a missing texture is refused", "[render]") {
+  const DrawFrame frame = boxFrame();   // a red box
+  auto renderer = Renderer::create(smallConfig());
+  renderer->addMesh(texturedBox(-1));
+  renderer->draw(frame);
+  RgbImage img;
+  renderer->readBack(img);
+  const Pixel c = atWorld(img, frame, {0, -0.5f, 1});
+  CHECK(c.r > 2 * c.g);
+  CHECK(c.r > 2 * c.b);
+  try {
+    renderer->addMesh(texturedBox(3));
+    FAIL("expected an error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK_THAT(e.what(), Catch::Contains("texture 3"));
+  }
+}

@@ -1,8 +1,6 @@
 # Shared by the scale-out scripts (sourced): a single-process reference render, and the checks
 # that chunks rendered elsewhere add up to it. Expects $tumble, $scene, $work and $size set.
 
-frames=120   # the knock-down: 4 s at 30 frames/s
-
 skip() {
   echo "SKIPPED: $*"
   exit 77   # CTest's SKIP_RETURN_CODE for these tests
@@ -13,10 +11,13 @@ fail() {
   exit 1
 }
 
-# The motion once, and every frame rendered by one process that simulates for itself.
+# The motion once, and every frame rendered by one process that simulates for itself; sets
+# $frames to the clip's frame count.
 simulate_and_render_reference() {
   "$tumble" simulate "$scene" -q --trajectory "$work/motion.csv"
   "$tumble" render "$scene" -q --size "$size" -o "$work/reference/f_####.png"
+  frames=$(find "$work/reference" -name 'f_*.png' | wc -l)
+  [ "$frames" -gt 4 ] || fail "the reference render holds $frames frames"
 }
 
 # Every frame present once, each PNG byte for byte the reference's.

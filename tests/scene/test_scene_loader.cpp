@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
 
 using namespace tumble;
 
@@ -104,10 +105,13 @@ TEST_CASE("the contact time search and tolerance are scene settings", "[scene]")
   CHECK_FALSE(parseScene(kMinimal, "scenes/test.json").simulation.step.contact.regula_falsi);
 }
 
-TEST_CASE("duration_s sets the frame count", "[scene]") {
+TEST_CASE("duration_s sets the frame count so that the last frame shows the duration", "[scene]") {
   Scene s = parseScene(R"({"schema_version": 1, "render": {"fps": 25, "duration_s": 2},
     "bodies": [{"shape": "box"}]})", "scenes/test.json");
-  CHECK(s.render.frames == 50);
+  CHECK(s.render.frames == 51);   // t = 0, 0.04, ..., 2 s
+  CHECK(durationOfFrames(s.render.frames, s.render.fps) == 2.0);
+  setDuration(s, 1);
+  CHECK(s.render.frames == 26);
 }
 
 TEST_CASE("each bad input names file, line, column and field", "[scene]") {

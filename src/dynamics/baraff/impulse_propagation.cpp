@@ -196,10 +196,34 @@ bool sharesMovingBody(const World& world, const PairImpact& p, const PairImpact&
   return false;
 }
 
+// Whether any point of the island approaches fast enough to bounce (restitution_laws.h's rule).
+bool anyBounces(const World& world, const std::vector<const Contact*>& island, double min_bounce_speed) {
+  for (const Contact* c : island)
+    if (c->restitution > 0 && normalVelocity(world, *c) < -min_bounce_speed) return true;
+  return false;
+}
+
+// All the island's contacts at once, inelastic: nothing approaching after, no energy added.
+void plasticImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
+                   double min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats) {
+  if (tooLargeToPivot(island.size(), s.max_direct_rows)) inelasticIslandImpact(world, island, stats);
+  else resolveImpact(world, island, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
+}
+
 }  // namespace
 
 void propagateImpulses(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
                        double min_bounce_speed, double dt, ContactSolveStats& stats) {
+  const SettleRule settle = settleRule(s, dt);
+  // Pair by pair is how an elastic impact travels (a cradle's balls leave one after another). An
+  // island where no point bounces is a plastic impact, whose answer is the simultaneous one: every
+  // point's impulse at once, no point approaching after (J.-J. Moreau's impact law). Pair by pair it
+  // is a Gauss-Seidel sweep that friction keeps from converging to it: a tent landing on a loose
+  // card took its feet's impulses first, card and ground apart, and spun its two cards unequally.
+  if (!anyBounces(world, island, min_bounce_speed)) {
+    plasticImpact(world, island, s, min_bounce_speed, settle, stats);
+    return;
+  }
   std::vector<PairImpact> pairs = groupByPair(island);
   for (PairImpact& p : pairs) p.approach = approachOf(world, p);
   const int n = static_cast<int>(pairs.size());
@@ -207,7 +231,6 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
   // are capped so a pinched body cannot bounce for ever; inelastic rounds converge like
   // Gauss-Seidel on the inelastic impulse LCP, and the cap only stops a slow one.
   const int elastic_rounds = 4 * n + 4, max_rounds = 16 * n + 16;
-  const SettleRule settle = settleRule(s, dt);
   for (int round = 0; round < max_rounds; ++round) {
     // The pair approaching fastest (first in island order on ties: deterministic).
     int k = 0;
@@ -221,8 +244,7 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.
-  if (tooLargeToPivot(island.size(), s.max_direct_rows)) inelasticIslandImpact(world, island, stats);
-  else resolveImpact(world, island, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
+  plasticImpact(world, island, s, min_bounce_speed, settle, stats);
 }
 
 }  // namespace tumble

@@ -15,6 +15,11 @@
 // approaching fastest is solved first; its impulse changes the velocities its neighbours see, and
 // the next pair that now approaches is solved next, until no contact of the island approaches
 // (Guendelman, Bridson and Fedkiw 2003 iterate over pairs in the same spirit).
+// An island where no point bounces (every restitution 0, or every approach slower than the least
+// bounce) has no wave to follow: it is a plastic impact, solved simultaneously over the island
+// (J.-J. Moreau, "Unilateral contact and dry friction in finite freedom dynamics", 1988). Pair by
+// pair it would be Gauss-Seidel stopped short, and with friction its answer depends on the order:
+// a tent of two cards landing on a loose card took its feet's impulses first and spun its cards.
 //
 // Termination: the first rounds use each contact's restitution; after a few rounds per pair
 // (bodies pinched between others can trade an elastic impulse back and forth for ever) the rounds

@@ -33,6 +33,8 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
     Contact c = contacts[i];
     const PiecePair pair = pairs[i];
     if (c.closest_points && pair.piece_b >= 0 && -c.depth > tolerance) {
+      // a pair apart along parallel edges has a point at each end: one first touch for the pair
+      if (i > 0 && pairs[i - 1] == pair && contacts[i - 1].closest_points) continue;
       const FreeMotion ma = freeMotion(world, world.bodies[c.a], dt, gravity);
       const FreeMotion mb = freeMotion(world, world.bodies[c.b], dt, gravity);
       const FirstTouch touch = firstTouch(detector.hull(pair.piece_a), ma, detector.hull(pair.piece_b), mb, dt, tolerance);
