@@ -97,3 +97,26 @@ TEST_CASE("a missing trajectory exits 66 and names it", "[scale-out]") {
   CHECK(r.exit_code == 66);
   CHECK_THAT(r.output, Catch::Contains("nope.csv"));
 }
+
+TEST_CASE("moving cameras see the same frames from a trajectory: a fit camera holds the whole clip, a follow camera its lag", "[scale-out]") {
+  fs::path dir = freshFolder("cameras");
+  // The knock-down with two more cameras; the motion hash leaves cameras out.
+  std::string scene = sceneCopy(dir, "cameras.json", "\"lights\":",
+                                R"("cameras": [ { "name": "wide", "fit": "all", "yaw_deg": 10, "pitch_deg": 20 },
+                                                { "name": "chase", "follow": { "body": "block_0", "offset_m": [0, -5, 2],
+                                                                              "smoothing_s": 0.3 } } ],
+                                   "lights":)");
+  std::string csv = (dir / "motion.csv").string();
+  REQUIRE(runTumble("simulate " + kScene + " -q --trajectory " + csv).exit_code == 0);
+  for (const std::string camera : {"wide", "chase"}) {
+    INFO(camera);
+    const std::string common = "render " + scene + kSmall + " --camera " + camera + " --frames 12 -o ";
+    REQUIRE(runTumble(common + (dir / (camera + "_a.png")).string()).exit_code == 0);
+    auto r = runTumble(common + (dir / (camera + "_b.png")).string() + " --from-trajectory " + csv);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    std::string a = fileBytes(dir / (camera + "_a.png"));
+    REQUIRE(a.size() > 1000);
+    CHECK(a == fileBytes(dir / (camera + "_b.png")));
+  }
+}
