@@ -11,6 +11,7 @@ namespace tumble {
 std::function<int()> addRenderCommand(CLI::App& app);
 std::function<int()> addSimulateCommand(CLI::App& app);
 std::function<int()> addCheckCommand(CLI::App& app);
+std::function<int()> addJoinCommand(CLI::App& app);
 // diff returns 0/1/2 (pass, fail, bad input) itself, as diff tools do; it throws nothing.
 std::function<int()> addDiffCommand(CLI::App& app);
 

@@ -17,8 +17,10 @@ const char* kExitCodes = R"(Exit codes:
   0   success
   64  bad command line (unknown flag, malformed value, a --set without PATH=VALUE)
   65  bad scene: malformed JSON, unknown field, wrong type, value out of range, unusable mesh,
-      the same in a --set value or a --patch file
-  66  missing input: the scene, a --patch file or a mesh file does not exist or cannot be read
+      the same in a --set value or a --patch file; or a trajectory from another scene or lacking a
+      frame asked for; or video parts that do not join
+  66  missing input: the scene, a --patch file, a mesh, a trajectory or a video part does not exist
+      or cannot be read
   69  unavailable: no OpenGL (OSMesa) or no H.264 encoder (libx264)
   70  numerical failure during the simulation (NaN or infinite state)
   73  cannot create output: it exists (add -y) or the folder is not writable
@@ -39,6 +41,7 @@ int main(int argc, char** argv) {
       {"simulate", tumble::addSimulateCommand(app)},
       {"check", tumble::addCheckCommand(app)},
       {"diff", tumble::addDiffCommand(app)},
+      {"join", tumble::addJoinCommand(app)},
   };
   // diff has its own exit codes (0/1/2, as diff tools) and footer.
   for (CLI::App* sub : app.get_subcommands({}))

@@ -13,8 +13,11 @@
 #include "app/progress.h"
 #include "app/render_dry_run.h"
 #include "app/scene_drawing.h"
+#include "app/scale_out_options.h"
 #include "app/scene_options.h"
 #include "app/stats_file.h"
+#include "app/shard_selection.h"
+#include "app/trajectory_source.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -36,6 +39,8 @@ struct RenderOptions {
   bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
   std::string stats;           // --stats FILE.json; empty: none
+  std::string from_trajectory;  // motion from this CSV instead of simulating; empty: simulate
+  ShardRequest shard;
   CheckOptions check;
 };
 
@@ -71,11 +76,15 @@ void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
 }
 
 // Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
-// drops the frames whose PNG is already there (resuming an interrupted render).
+// drops the frames whose PNG is already there (resuming an interrupted render), or every frame
+// when the video exists.
 void resolveExisting(const RenderOptions& o, const OutputTarget& target, std::vector<int>& frames) {
-  if (o.skip_existing && target.kind == OutputTarget::Kind::Video)
-    throw Error(ExitCode::Usage, "--skip-existing works with PNG sequences; a video is one file (use -y to replace it)");
   if (o.skip_existing && o.overwrite) throw Error(ExitCode::Usage, "--skip-existing and --overwrite contradict each other");
+  if (o.skip_existing && target.kind == OutputTarget::Kind::Video) {
+    // A video only ever appears whole (VideoSink), so one that exists is a finished chunk.
+    if (std::filesystem::exists(target.path)) frames.clear();
+    return;
+  }
   std::vector<std::filesystem::path> existing = existingOutputs(target, frames);
   for (const std::filesystem::path& p : existing) checkReplaceable(p);   // a folder or device: never
   if (existing.empty() || o.overwrite) return;
@@ -125,8 +134,11 @@ int run(const RenderOptions& o) {
   applyRenderOverrides(o, scene);
   const CameraSpec& camera = pickCamera(scene, o.camera);
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
+  std::optional<Shard> shard = chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv);
+  if (shard) frames = shardFrames(frames, *shard);
   std::string output = !o.output.empty() ? o.output : scene.output.value_or("out/" + scene.name + ".mp4");
   OutputTarget target = parseOutput(output, static_cast<int>(frames.size()));
+  if (shard) useShardOutput(*shard, frames, target, o.scene.quiet);
   if (o.dry_run) {
     printDryRun({scene, camera, frames, target, o.overwrite}, stdout);
     return 0;
@@ -155,17 +167,25 @@ int run(const RenderOptions& o) {
   SceneDrawing drawing = prepareDrawing(scene, built.world);
   for (const std::string& w : drawing.warnings)
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
-  Simulator simulator(std::move(built.world), plan);
-  Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
+  std::optional<Simulator> simulator;   // none when the motion is read from a trajectory file
+  Trajectory trajectory;
   auto start = std::chrono::steady_clock::now();
-  Trajectory trajectory = simulator.run([&](int f) {
-    sim_progress.update(f);
-    stopIfInterrupted("simulating", f, plan.frames);
-  });
-  sim_progress.finish();
+  if (!o.from_trajectory.empty()) {
+    std::vector<std::string> names;
+    for (const RigidBody& b : built.world.bodies) names.push_back(b.name);
+    trajectory = readTrajectoryFor(scene, names, o.from_trajectory, last_simulated);
+  } else {
+    simulator.emplace(std::move(built.world), plan);
+    Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
+    trajectory = simulator->run([&](int f) {
+      sim_progress.update(f);
+      stopIfInterrupted("simulating", f, plan.frames);
+    });
+    sim_progress.finish();
+    reportFaults(simulator->faults());
+    reportTarget(*simulator, o.scene.quiet);
+  }
   times.simulate = secondsSince(start);
-  reportFaults(simulator.faults());
-  reportTarget(simulator, o.scene.quiet);
 
   RenderConfig config;
   config.width = scene.render.width;
@@ -217,7 +237,7 @@ int run(const RenderOptions& o) {
   double wall = secondsSince(total_start);
 
   if (!o.scene.quiet || interrupted) {
-    double simulated = trajectory.times.back();
+    double simulated = trajectory.times[frames.back() - 1];
     std::fprintf(stderr,
                  "tumble: %s %d of %zu frames (%.3f s simulated) to %s in %s: simulate %s, render %s, "
                  "read back %s, encode %s (%.1f frames/s)\n",
@@ -228,7 +248,7 @@ int run(const RenderOptions& o) {
   }
   if (o.scene.verbose) {
     printMedians(times, 1e3 * times.simulate / plan.frames);
-    printPipelineStats(simulator.pipeline());
+    if (simulator) printPipelineStats(simulator->pipeline());
   }
   if (!o.stats.empty()) writeStatsFile(o.stats, o.overwrite, renderStats(times, simulator, plan, trajectory, wall, done));
   if (interrupted) return static_cast<int>(ExitCode::Interrupted);
@@ -271,10 +291,12 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_flag("-y,--overwrite", o->overwrite, "Replace existing outputs");
   cmd->add_flag("--dry-run", o->dry_run,
                 "Print the resolved settings, each frame's simulated time and output file; write nothing");
-  cmd->add_flag("--skip-existing", o->skip_existing, "Keep PNG frames that already exist (resume)");
+  cmd->add_flag("--skip-existing", o->skip_existing,
+                "Keep PNG frames that already exist (resume); with a video, do nothing if it exists (a finished chunk)");
   cmd->add_option("--check-against", o->check_against,
                   "Compare each frame with DIR/frame_####.png; exit 0 pass, 1 fail, 2 missing or other size");
   addCheckOptions(*cmd, o->check);
+  addScaleOutOptions(*cmd, o->from_trajectory, o->shard);
   return [o] { return run(*o); };
 }
 

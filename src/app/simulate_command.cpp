@@ -10,6 +10,7 @@
 #include "app/progress.h"
 #include "app/scene_options.h"
 #include "app/stats_file.h"
+#include "app/trajectory_source.h"
 #include "base/error.h"
 #include "dynamics/simulator.h"
 #include "scene/world_builder.h"
@@ -50,7 +51,9 @@ int run(const SimulateOptions& o) {
   if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
   if (!o.gltf.empty()) checkGltfOutput(o.gltf, o.overwrite);
   std::unique_ptr<CsvTrajectoryWriter> csv;
-  if (!o.trajectory.empty()) csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite);
+  if (!o.trajectory.empty())
+    csv = std::make_unique<CsvTrajectoryWriter>(o.trajectory, o.overwrite,
+                                                std::vector<std::string>{trajectoryComment(scene, o.every_step)});
   BuiltWorld built = buildWorld(scene);
   for (const std::string& w : built.warnings)
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: warning: %s\n", w.c_str());
@@ -106,7 +109,8 @@ std::function<int()> addSimulateCommand(CLI::App& app) {
   addSceneOptions(*cmd, o->scene);
   addKeepGoingOption(*cmd, o->scene);
   cmd->add_option("--trajectory", o->trajectory,
-                  "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI)");
+                  "CSV file ('-': standard output): time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz (world frame, centre of mass, SI), "
+                  "after a '# tumble trajectory' line with the scene's motion hash; render --from-trajectory reads it");
   cmd->add_flag("--every-step", o->every_step, "One row per body per step instead of per frame");
   cmd->add_option("--stats", o->stats,
                   "Write where the time went, step and contact counts, energy drift and deepest penetration "

@@ -38,9 +38,11 @@ void appendName(std::string& out, const std::string& name) {
 
 }  // namespace
 
-CsvTrajectoryWriter::CsvTrajectoryWriter(const fs::path& path, bool overwrite)
+CsvTrajectoryWriter::CsvTrajectoryWriter(const fs::path& path, bool overwrite,
+                                         const std::vector<std::string>& comments)
     : path_(path), overwrite_(overwrite) {
-  buffer_ = kHeader;
+  for (const std::string& c : comments) buffer_ += "# " + c + "\n";
+  buffer_ += kHeader;
   buffer_ += '\n';
   if (isStreamOutput(path_)) {
     file_ = path_ == "-" ? stdout : std::fopen(path_.c_str(), "wb");

@@ -3,6 +3,8 @@
 // Numbers are the shortest text that reads back to the same double (std::to_chars), so a written
 // trajectory reads back bit for bit and two equal trajectories give byte-identical files.
 // Body names are quoted (RFC 4180) only when they hold a comma, a quote or a line break.
+// Lines before the header that start with '#' are comments (tumble writes one saying which scene
+// the motion came from; pandas reads past them with comment='#').
 #pragma once
 
 #include <array>
@@ -20,7 +22,9 @@ class CsvTrajectoryWriter {
   // Opens a temporary file next to `path`; close() renames it onto `path`. Without `overwrite`
   // an existing file is Error(CantCreate). A stream ("-" for standard output, a device, a pipe:
   // isStreamOutput) is written in place instead. Errors name `path`.
-  CsvTrajectoryWriter(const std::filesystem::path& path, bool overwrite);
+  // `comments` go first, each as a line "# TEXT".
+  CsvTrajectoryWriter(const std::filesystem::path& path, bool overwrite,
+                      const std::vector<std::string>& comments = {});
   ~CsvTrajectoryWriter();   // without close(), removes the temporary file: no half a CSV
   CsvTrajectoryWriter(const CsvTrajectoryWriter&) = delete;
   CsvTrajectoryWriter& operator=(const CsvTrajectoryWriter&) = delete;
@@ -43,8 +47,15 @@ struct TrajectoryRow {
   std::array<double, CsvTrajectoryWriter::kValues> v{};
 };
 
+struct TrajectoryCsv {
+  std::vector<std::string> comments;   // the text after "# " of each leading comment line
+  std::vector<TrajectoryRow> rows;
+};
+
 // Reads a file written by CsvTrajectoryWriter. Throws Error(MissingInput) when absent, and
 // Error(BadInput) "PATH:LINE: reason" for a malformed header or row.
+TrajectoryCsv readTrajectoryCsvFile(const std::filesystem::path& path);
+// The rows alone.
 std::vector<TrajectoryRow> readTrajectoryCsv(const std::filesystem::path& path);
 
 }  // namespace tumble

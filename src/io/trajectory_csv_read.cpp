@@ -1,5 +1,6 @@
 // The reader half of trajectory_csv.h: RFC 4180 records (quoted fields may hold commas, doubled
 // quotes and line breaks), numbers parsed with std::from_chars so they read back exactly.
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -74,26 +75,39 @@ TrajectoryRow parseRow(const fs::path& path, int line, const std::vector<std::st
 
 }  // namespace
 
-std::vector<TrajectoryRow> readTrajectoryCsv(const fs::path& path) {
+TrajectoryCsv readTrajectoryCsvFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(ExitCode::MissingInput, "cannot read " + path.string());
   std::ostringstream all;
   all << in.rdbuf();
   const std::string text = all.str();
 
+  TrajectoryCsv csv;
   std::size_t pos = 0;
   int line = 1;
+  while (pos < text.size() && text[pos] == '#') {
+    std::size_t end = std::min(text.find('\n', pos), text.size());
+    std::string comment = text.substr(pos + 1, end - pos - 1);
+    if (!comment.empty() && comment.back() == '\r') comment.pop_back();
+    csv.comments.push_back(comment.rfind(' ', 0) == 0 ? comment.substr(1) : comment);
+    pos = end + 1;
+    ++line;
+  }
   std::vector<std::string> fields;
+  const int header_line = line;
   if (!nextRecord(text, pos, line, fields) || fields.size() != 15 || fields[0] != "time" ||
       fields[1] != "body") {
-    bad(path, 1, "not a trajectory CSV (expected the header time,body,px,...,wz)");
+    bad(path, header_line, "not a trajectory CSV (expected the header time,body,px,...,wz)");
   }
-  std::vector<TrajectoryRow> rows;
   for (int start = line; nextRecord(text, pos, line, fields); start = line) {
     if (fields.size() == 1 && fields[0].empty()) continue;   // a blank line
-    rows.push_back(parseRow(path, start, fields));
+    csv.rows.push_back(parseRow(path, start, fields));
   }
-  return rows;
+  return csv;
+}
+
+std::vector<TrajectoryRow> readTrajectoryCsv(const fs::path& path) {
+  return readTrajectoryCsvFile(path).rows;
 }
 
 }  // namespace tumble

@@ -13,6 +13,7 @@ extern "C" {
 
 #include "base/error.h"
 #include "io/atomic_file.h"
+#include "io/av_owners.h"
 
 namespace tumble {
 
@@ -20,27 +21,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string avError(int err) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(err, text, sizeof text);
-  return text;
-}
+using FormatFree = av::OutputFree;
+using PacketFree = av::PacketFree;
+
+std::string avError(int err) { return av::errorText(err); }
 
 // Owners for the libav objects, so every exit path (including exceptions) releases them.
-struct FormatFree {
-  void operator()(AVFormatContext* f) const {
-    if (f->pb && !(f->oformat->flags & AVFMT_NOFILE)) avio_closep(&f->pb);
-    avformat_free_context(f);
-  }
-};
 struct CodecFree {
   void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
 };
 struct FrameFree {
   void operator()(AVFrame* f) const { av_frame_free(&f); }
-};
-struct PacketFree {
-  void operator()(AVPacket* p) const { av_packet_free(&p); }
 };
 struct SwsFree {
   void operator()(SwsContext* s) const { sws_freeContext(s); }
@@ -48,10 +39,7 @@ struct SwsFree {
 
 std::atomic<bool> log_level_chosen{false};
 
-bool wantsFaststart(const AVOutputFormat* format) {
-  std::string name = format->name;   // "mov,mp4,m4a,3gp,3g2,mj2" for the demuxer; muxers are single
-  return name == "mp4" || name == "mov";
-}
+using av::wantsFaststart;
 
 }  // namespace
 

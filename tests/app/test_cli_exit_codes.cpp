@@ -22,7 +22,7 @@ fs::path freshDir(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("--help documents the subcommands and exit codes and exits 0", "[cli]") {
+TEST_CASE("tumble --help documents the subcommands and exit codes and exits 0", "[cli]") {
   auto r = runTumble("--help");
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.output, Catch::Contains("render") && Catch::Contains("simulate") && Catch::Contains("check"));
@@ -91,15 +91,18 @@ TEST_CASE("simulate writes an exact, stable trajectory CSV", "[cli]") {
   std::ifstream a(dir / "a.csv"), b(dir / "b.csv");
   std::string ta((std::istreambuf_iterator<char>(a)), {}), tb((std::istreambuf_iterator<char>(b)), {});
   CHECK(ta == tb);   // deterministic across processes
-  CHECK(ta.rfind("time,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n", 0) == 0);
-  // 10 frames x 2 bodies + header
-  CHECK(std::count(ta.begin(), ta.end(), '\n') == 21);
+  // tumble's line naming the scene's motion, then the header
+  CHECK(ta.rfind("# tumble trajectory; motion-hash=", 0) == 0);
+  CHECK(ta.find("; rows=frame; scene=small_box.json\ntime,body,px,py,pz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n") != std::string::npos);
+  // 10 frames x 2 bodies + header + tumble's line
+  CHECK(std::count(ta.begin(), ta.end(), '\n') == 22);
   auto steps = runTumble("simulate " + kScene + " -q --every-step --trajectory " + (dir / "c.csv").string());
   REQUIRE(steps.exit_code == 0);
   std::ifstream c(dir / "c.csv");
   std::string tc((std::istreambuf_iterator<char>(c)), {});
   // 9 frame intervals x 24 steps (1/240 s nearest divisor of 1/10 s) + the initial state, x 2 bodies
-  CHECK(std::count(tc.begin(), tc.end(), '\n') == 1 + 2 * (9 * 24 + 1));
+  CHECK(std::count(tc.begin(), tc.end(), '\n') == 2 + 2 * (9 * 24 + 1));
+  CHECK(tc.find("; rows=step;") != std::string::npos);
 }
 
 TEST_CASE("simulate reports an accuracy target, and a miss as a warning even with -q, still exiting 0", "[cli]") {
