@@ -113,9 +113,12 @@ std::string formatSeconds(double s) {
   return buffer;
 }
 
-nlohmann::json renderStats(const PhaseTimes& t, const Simulator& simulator, const SimulationPlan& plan,
-                           const Trajectory& trajectory, double wall, int rendered) {
-  nlohmann::json stats = simulationStats(simulator, plan, trajectory.times.back());
+// `simulator` is null when the motion was read from a trajectory (`from`): there are no stage
+// times or contact counts to report then, only where the motion came from.
+nlohmann::json renderStats(const PhaseTimes& t, const Simulator* simulator, const std::string& from,
+                           const SimulationPlan& plan, const Trajectory& trajectory, double wall, int rendered) {
+  nlohmann::json stats = simulator ? simulationStats(*simulator, plan, trajectory.times.back())
+                                   : nlohmann::json{{"motion_from_trajectory", from}};
   stats["command"] = "render";
   stats["wall_s"] = wall;
   stats["frames_rendered"] = rendered;
@@ -250,7 +253,7 @@ int run(const RenderOptions& o) {
     printMedians(times, 1e3 * times.simulate / plan.frames);
     if (simulator) printPipelineStats(simulator->pipeline());
   }
-  if (!o.stats.empty()) writeStatsFile(o.stats, o.overwrite, renderStats(times, simulator, plan, trajectory, wall, done));
+  if (!o.stats.empty()) writeStatsFile(o.stats, o.overwrite, renderStats(times, simulator ? &*simulator : nullptr, o.from_trajectory, plan, trajectory, wall, done));
   if (interrupted) return static_cast<int>(ExitCode::Interrupted);
   if (!check) return 0;
   if (!o.scene.quiet || check->exitCode() != 0) check->printSummary("tumble render --check-against");

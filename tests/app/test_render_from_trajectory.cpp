@@ -35,10 +35,13 @@ TEST_CASE("frames rendered from a trajectory are bit-identical to frames of a re
   const std::string frames = " --frames 1,23,40,90,120";
   auto direct = runTumble("render " + kScene + kSmall + frames + " -o '" + (dir / "a" / "f_####.png").string() + "'");
   REQUIRE(direct.exit_code == 0);
-  auto read = runTumble("render " + kScene + kSmall + frames + " --from-trajectory " + csv + " -o '" +
-                        (dir / "b" / "f_####.png").string() + "'");
+  const std::string stats = (dir / "stats.json").string();
+  auto read = runTumble("render " + kScene + kSmall + frames + " --from-trajectory " + csv + " --stats " + stats +
+                        " -o '" + (dir / "b" / "f_####.png").string() + "'");
   INFO(read.output);
   REQUIRE(read.exit_code == 0);
+  // Nothing was simulated: the stats say where the motion came from instead of stage times.
+  CHECK_THAT(fileBytes(stats), Catch::Contains("\"motion_from_trajectory\"") && Catch::Contains("motion.csv"));
   for (int k : {1, 23, 40, 90, 120}) {
     INFO("frame " << k);
     std::string a = fileBytes(dir / "a" / frameName(k));
@@ -60,6 +63,9 @@ TEST_CASE("a trajectory from another scene is refused with exit 65, naming the f
   // Timing flags change the motion too.
   CHECK(runTumble("render " + kScene + kSmall + " --fps 60 --frames 5 --from-trajectory " + csv + " -o " +
                   (dir / "y.png").string()).exit_code == 65);
+  // So do --set and --patch: the same scene with a changed friction is another motion.
+  CHECK(runTumble("render " + kScene + kSmall + " --set bodies.ground.friction=0.2 --frames 5 --from-trajectory " + csv +
+                  " -o " + (dir / "w.png").string()).exit_code == 65);
   // What only changes the picture (the camera, a colour) keeps the motion: accepted.
   std::string moved = sceneCopy(dir, "moved.json", "\"fov_y_deg\": 45", "\"fov_y_deg\": 30");
   CHECK(runTumble("render " + moved + kSmall + " --frames 5 --from-trajectory " + csv + " -o " +

@@ -28,7 +28,7 @@ TEST_CASE("render, simulate and check take --set and --patch", "[cli][edits]") {
   CHECK_THAT(r.output, Catch::Contains("20 fps") && Catch::Contains(" 3 "));
 }
 
-TEST_CASE("--set changes the simulated motion", "[cli][edits]") {
+TEST_CASE("a --set changes the simulated motion", "[cli][edits]") {
   fs::path dir = freshDir("motion");
   REQUIRE(runTumble("simulate -q " + kScene + " --set 'bodies.box.velocity_m_s=[0,0,0]' --set "
                     "bodies.box.angular_velocity_rad_s=[0,0,0] --trajectory " + (dir / "t.csv").string())

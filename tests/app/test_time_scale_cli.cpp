@@ -25,7 +25,7 @@ std::string timeOf(const fs::path& png) {
 
 }  // namespace
 
-TEST_CASE("--time-scale 0.25 gives four times the frames over the same simulated span", "[cli][time-scale]") {
+TEST_CASE("render --time-scale 0.25 gives four times the frames over the same simulated span", "[cli][time-scale]") {
   auto r = runTumble("render " + kScene + " --time-scale 0.25 --dry-run -o out/x.mp4");
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.output, Catch::Contains("37 frames in the clip") && Catch::Contains("6 steps per frame") &&

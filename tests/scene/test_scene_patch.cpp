@@ -36,7 +36,7 @@ std::string errorOf(const std::vector<SceneEdit>& edits) {
 
 }  // namespace
 
-TEST_CASE("--set finds a body by its name and writes a typed value", "[scene][edits]") {
+TEST_CASE("a --set finds a body by its name and writes a typed value", "[scene][edits]") {
   Scene s = parseScene(kTwoBodies, "s.json", {set("bodies.ball.restitution=0.9"), set("render.draw=hulls")});
   CHECK(s.bodies[1].restitution == 0.9);
   CHECK(s.render.draw == BodyDraw::Hulls);   // an unquoted word is a string
