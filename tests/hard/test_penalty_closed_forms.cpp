@@ -14,7 +14,7 @@
 //   keeps an undamped bounce to (ω h)² = 1e-2 of its energy; measured 1e-3).
 // - Hertz's impact: a steel ball on a steel plane at 1 m/s lasts t_c = 2.87 (m*² / (R* E*² v0))^(1/5)
 //   and peaks at F = K δm^1.5, δm = (15 m* v0² / (16 E* R*^0.5))^(2/5) (K. L. Johnson, "Contact
-//   Mechanics", 1985, section 11.4): both within 2 % (the issue's bound; the closed form's 2.87
+//   Mechanics", 1985, section 11.4): both within 2 % (the acceptance bound; the closed form's 2.87
 //   is itself rounded to 3 digits, 2.868).
 // - Static penetration: a ball resting under its weight sinks to m g = K δ^n exactly (to 1e-6,
 //   rounding of a settled equilibrium), for a Hertz-type and a linear law.

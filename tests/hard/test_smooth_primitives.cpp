@@ -5,7 +5,7 @@
 // A ball launched sliding (scenes/hard/ball_rolling.json): slides until t* = 2 v0 / (7 mu g), then
 // rolls at 5/7 v0. Tolerances: the roll must start within one step of t* (friction acts per step,
 // so the slip ends in the step that holds t*); the rolling speed to 1e-9 m/s and the centre's
-// height to 1e-9 m (the bound): the stick conserves angular momentum about the contact
+// height to 1e-9 m (the acceptance bound): the stick conserves angular momentum about the contact
 // exactly and nothing lifts or presses an exact sphere, so only rounding is left (about 1e-15).
 //
 // A capsule lying on a box (scenes/hard/capsule_on_box.json) and a can standing on one
