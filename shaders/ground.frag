@@ -31,5 +31,5 @@ void main() {
   float t = filteredChecker(v_world.xy / u_checker_m);
   vec3 albedo = mix(u_colour_a, u_colour_b, t);
   vec3 colour = shade(albedo, v_world, vec3(0.0, 0.0, 1.0));
-  frag_colour = vec4(encodeSrgb(fadeWithDistance(colour, v_world)), 1.0);
+  frag_colour = vec4(encodeSrgb(fadeWithDistance(toneMap(colour), v_world)), 1.0);
 }

@@ -9,5 +9,5 @@ out vec4 frag_colour;
 
 void main() {
   vec3 colour = shade(v_albedo, v_world, v_normal);
-  frag_colour = vec4(encodeSrgb(fadeWithDistance(colour, v_world)), 1.0);
+  frag_colour = vec4(encodeSrgb(fadeWithDistance(toneMap(colour), v_world)), 1.0);
 }

@@ -15,5 +15,5 @@ void main() {
   vec3 albedo = v_albedo * texture(u_albedo_map, v_uv).rgb;
   // Interpolated unit normals shorten between corners: renormalise per pixel.
   vec3 colour = shade(albedo, v_world, normalize(v_normal));
-  frag_colour = vec4(encodeSrgb(fadeWithDistance(colour, v_world)), 1.0);
+  frag_colour = vec4(encodeSrgb(fadeWithDistance(toneMap(colour), v_world)), 1.0);
 }

@@ -31,9 +31,11 @@ ShadowMap::ShadowMap(int size) : size_(size) {
   glBindTexture(GL_TEXTURE_2D, texture_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT,
                GL_UNSIGNED_INT, nullptr);
-  // LINEAR with a compare mode gives filtered (percentage-closer) results per lookup.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // NEAREST: each lookup is one depth comparison. The shaders take several of them spread over
+  // the pixel instead of one LINEAR (2x2 bilinear) lookup: on llvmpipe a LINEAR comparison costs
+  // about eight NEAREST ones, and the spread is what smooths the edge (see lighting.glsl).
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   // Outside the fitted box there are no casters: the border depth 1 compares as lit.

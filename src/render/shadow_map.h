@@ -1,5 +1,6 @@
 // The shadow map: a square depth texture with its own framebuffer, sampled with hardware depth
-// comparison (sampler2DShadow) so each lookup is already a 2x2 bilinear PCF.
+// comparison (sampler2DShadow, NEAREST): each lookup is one comparison, and the shaders average
+// several per pixel (percentage-closer filtering, see shaders/lighting.glsl).
 #pragma once
 
 #include "render/gl_api.h"
