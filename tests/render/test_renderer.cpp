@@ -274,3 +274,20 @@ TEST_CASE("a mesh without a texture is drawn in its instance's colour, and a mis
     CHECK_THAT(e.what(), Catch::Contains("texture 3"));
   }
 }
+
+TEST_CASE("faces lit past white keep their difference (tone mapping, not clipping)", "[render]") {
+  DrawFrame frame = boxFrame();
+  frame.camera.eye = {0, -4, 5};  // sees the top face and the front (-y) face
+  frame.lights[0].intensity = 10.0f;
+  frame.instances[0].colour = {0.8f, 0.8f, 0.8f};
+  const RgbImage img = renderOnce(smallConfig(), frame);
+  // Lambert terms 0.69 (top) and 0.21 (front) under this light: in linear light the faces reach
+  // 5.5 and 1.7, both past white, which clamping would draw as the same flat 255.
+  const Pixel top = atWorld(img, frame, {0.2f, -0.1f, 1.5f});
+  const Pixel front = atWorld(img, frame, {0.2f, -0.5f, 0.8f});
+  // Acceptance bounds: the brighter face stays the brighter by several levels per channel (the
+  // curve gives about 14), and neither is pure white.
+  CHECK(top.sum() >= front.sum() + 3 * 6);
+  CHECK(top.sum() < 3 * 255);
+  CHECK(front.sum() < 3 * 255);
+}
