@@ -9,6 +9,7 @@
 
 #include "app/stats_file.h"
 #include "io/atomic_file.h"
+#include "io/png_bytes.h"
 
 namespace tumble {
 namespace {
@@ -49,6 +50,14 @@ class GltfBuffers {
     }
     doc_["accessors"].push_back(accessor);
     return static_cast<int>(doc_["accessors"].size() - 1);
+  }
+  // Appends raw bytes (an embedded image) as a bufferView; returns the view's index.
+  int addBytes(const std::vector<std::uint8_t>& bytes) {
+    while (bin_.size() % 4) bin_.push_back(0);
+    const std::size_t offset = bin_.size();
+    bin_.insert(bin_.end(), bytes.begin(), bytes.end());
+    doc_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}});
+    return static_cast<int>(doc_["bufferViews"].size() - 1);
   }
   const std::vector<std::uint8_t>& bin() const { return bin_; }
 
@@ -117,6 +126,19 @@ std::vector<std::uint8_t> glb(const json& doc, const std::vector<std::uint8_t>& 
   return out;
 }
 
+// The glTF texture index of each of the drawing's textures, embedded as PNG in the binary buffer
+// on first use (-1: not yet); a texture no exported part uses is left out.
+int gltfTexture(json& doc, GltfBuffers& buffers, const SceneDrawing& drawing, int texture,
+                std::vector<int>& gltf_texture_of) {
+  if (gltf_texture_of[texture] < 0) {
+    const int view = buffers.addBytes(encodePngBytes(drawing.textures[texture]));
+    doc["images"].push_back({{"bufferView", view}, {"mimeType", "image/png"}});
+    doc["textures"].push_back({{"source", doc["images"].size() - 1}});
+    gltf_texture_of[texture] = static_cast<int>(doc["textures"].size() - 1);
+  }
+  return gltf_texture_of[texture];
+}
+
 }  // namespace
 
 void checkGltfOutput(const std::filesystem::path& path, bool overwrite) { checkStatsOutput(path, overwrite); }
@@ -136,17 +158,23 @@ void writeGltf(const std::filesystem::path& path, bool overwrite, const SceneDra
   GltfBuffers buffers(doc);
   std::vector<float> times(trajectory.times.begin(), trajectory.times.end());
   const int input = buffers.add(times, 1, false, true);
-  std::vector<int> primitive_of_mesh(drawing.meshes.size(), -1);
+  std::vector<int> gltf_texture_of(drawing.textures.size(), -1);
+  doc["images"] = json::array();
+  doc["textures"] = json::array();
   std::vector<json> primitives;
   for (std::size_t m = 0; m < drawing.meshes.size(); ++m) primitives.push_back(primitiveOf(drawing.meshes[m], buffers));
   for (std::size_t b = 0; b < drawing.parts_of_body.size() && b < trajectory.body_names.size(); ++b) {
     if (drawing.parts_of_body[b].empty()) continue;
     json mesh = {{"name", trajectory.body_names[b]}, {"primitives", json::array()}};
     for (const DrawnPart& part : drawing.parts_of_body[b]) {
-      // baseColorFactor is linear, as DrawnPart's colour is.
-      doc["materials"].push_back({{"pbrMetallicRoughness",
-                                   {{"baseColorFactor", {part.colour.x(), part.colour.y(), part.colour.z(), 1.0}},
-                                    {"metallicFactor", 0.0}, {"roughnessFactor", 0.7}}}});
+      // baseColorFactor is linear, as DrawnPart's colour is; a base-colour texture is sRGB, as
+      // tumble samples it, and multiplies the factor, as in tumble's shader.
+      json pbr = {{"baseColorFactor", {part.colour.x(), part.colour.y(), part.colour.z(), 1.0}},
+                  {"metallicFactor", 0.0}, {"roughnessFactor", 0.7}};
+      const int texture = drawing.meshes[part.mesh].texture;
+      if (texture >= 0 && !drawing.meshes[part.mesh].uvs.empty())
+        pbr["baseColorTexture"] = {{"index", gltfTexture(doc, buffers, drawing, texture, gltf_texture_of)}};
+      doc["materials"].push_back({{"pbrMetallicRoughness", pbr}});
       json primitive = primitives[part.mesh];
       primitive["material"] = doc["materials"].size() - 1;
       mesh["primitives"].push_back(primitive);
@@ -163,6 +191,10 @@ void writeGltf(const std::filesystem::path& path, bool overwrite, const SceneDra
     addAnimation(doc, buffers, trajectory, static_cast<int>(b), node, input);
   }
   if (doc["animations"][0]["channels"].empty()) doc.erase("animations");   // glTF wants a channel in each
+  if (doc["images"].empty()) {   // glTF wants these arrays absent rather than empty
+    doc.erase("images");
+    doc.erase("textures");
+  }
   doc["buffers"] = {{{"byteLength", buffers.bin().size()}}};
   const std::vector<std::uint8_t> bytes = glb(doc, buffers.bin());
   writeFileWhole(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), overwrite);

@@ -108,6 +108,32 @@ TEST_CASE("the glTF holds a node per drawn body with its mesh and colour, under 
   CHECK(up.y == Approx(1).margin(1e-6));
 }
 
+TEST_CASE("a textured body's base-colour texture is embedded in the glTF", "[cli][gltf]") {
+  fs::path dir = tumble::test::freshTempDir("tumble_gltf_texture");
+  const std::string scene = std::string(TUMBLE_SOURCE_DIR) + "/tests/scenes/visual_textured_gltf.json";
+  REQUIRE(runTumble("simulate -q " + scene + " --gltf " + (dir / "m.glb").string()).exit_code == 0);
+  Assimp::Importer importer;
+  const aiScene* out = importer.ReadFile((dir / "m.glb").string(), 0);
+  REQUIRE(out);
+  const aiNode* box = out->mRootNode->FindNode("box");
+  REQUIRE(box);
+  REQUIRE(box->mNumMeshes == 1);
+  const aiMesh* mesh = out->mMeshes[box->mMeshes[0]];
+  CHECK(mesh->HasTextureCoords(0));
+  aiString path;
+  REQUIRE(out->mMaterials[mesh->mMaterialIndex]->GetTexture(aiTextureType_BASE_COLOR, 0, &path) == aiReturn_SUCCESS);
+  // Embedded, not a file beside it: assimp names embedded textures "*N".
+  const aiTexture* texture = out->GetEmbeddedTexture(path.C_Str());
+  REQUIRE(texture);
+  CHECK(texture->mHeight == 0);   // compressed (a PNG), mWidth bytes long
+  CHECK(texture->CheckFormat("png"));
+  const auto* bytes = reinterpret_cast<const unsigned char*>(texture->pcData);
+  REQUIRE(texture->mWidth > 8);
+  CHECK(bytes[1] == 'P');
+  CHECK(bytes[2] == 'N');
+  CHECK(bytes[3] == 'G');
+}
+
 TEST_CASE("an existing glTF is refused (73) unless -y", "[cli][gltf]") {
   fs::path dir = tumble::test::freshTempDir("tumble_gltf_exists");
   std::ofstream(dir / "m.glb") << "precious";
