@@ -1,20 +1,16 @@
 #include "io/provenance.h"
 
-#include <cstdint>
 #include <cstdio>
 #include <map>
+
+#include "base/fnv1a.h"
 
 namespace tumble {
 
 std::string contentHash(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ull;   // the FNV-1a 64-bit offset basis and prime
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
+  Fnv1a64 fnv;
+  fnv.add(text);
+  return fnv.hex();
 }
 
 std::vector<PngText> frameText(const Provenance& p, int frame) {

@@ -7,21 +7,18 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/fnv1a.h"
 #include "scene/object_reader.h"
 
 namespace tumble {
 
 namespace {
 
-// FNV-1a, 64 bits (Fowler, Noll and Vo): not cryptographic, which is not the point here; it tells
-// an edited or different scene from the one a trajectory came from.
-struct Fnv1a {
-  std::uint64_t h = 14695981039346656037ull;
-  void add(const std::string& bytes) {
-    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ 0xff) * 1099511628211ull;   // a separator, so "ab"+"c" differs from "a"+"bc"
-  }
-};
+// The hash of one part, then a separator, so "ab"+"c" differs from "a"+"bc".
+void addPart(Fnv1a64& fnv, const std::string& bytes) {
+  fnv.add(bytes);
+  fnv.addByte(0xff);
+}
 
 std::string readAll(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -47,21 +44,19 @@ std::string motionJson(const std::string& text) {
 }  // namespace
 
 std::string motionHash(const Scene& scene) {
-  Fnv1a fnv;
+  Fnv1a64 fnv;
   // The JSON after --set and --patch when the loader kept it: an override that changes the motion
   // must change the hash.
-  fnv.add(motionJson(scene.resolved_json.empty() ? readAll(scene.file) : scene.resolved_json));
+  addPart(fnv, motionJson(scene.resolved_json.empty() ? readAll(scene.file) : scene.resolved_json));
   const StepSettings& step = scene.simulation.step;
-  fnv.add("fps=" + std::to_string(scene.render.fps) + " steps_per_frame=" +
+  addPart(fnv, "fps=" + std::to_string(scene.render.fps) + " steps_per_frame=" +
           std::to_string(scene.simulation.steps_per_frame) + " dt=" + formatNumber(step.dt) +
           " integrator=" + std::to_string(static_cast<int>(step.integrator)) +
           " model=" + std::to_string(static_cast<int>(step.model)) +
           " sleep=" + std::to_string(step.sleep.enabled));
   for (const BodySpec& body : scene.bodies)
-    if (!body.mesh.empty()) fnv.add(readAll(body.mesh));
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv.h));
-  return hex;
+    if (!body.mesh.empty()) addPart(fnv, readAll(body.mesh));
+  return fnv.hex();
 }
 
 }  // namespace tumble
