@@ -175,15 +175,14 @@ bool edgeOverlapContact(const HullView& a, int a0, int a1, const HullView& b, in
   const double pa0 = along.dot(p), pa1 = pa0 + d.norm(), pb0 = along.dot(q), pb1 = pb0 + de;
   const double lo = std::max(pa0, std::min(pb0, pb1)), hi = std::min(pa1, std::max(pb0, pb1));
   if (!(hi >= lo)) return false;   // end to end: no overlap along the line
-  std::vector<ContactPoint> points;
+  out.points.clear();   // reused: the narrow phase allocates nothing once warm
   for (int end = 0; end < (hi > lo ? 2 : 1); ++end) {
     const double t = end == 0 ? lo : hi;
     const Eigen::Vector3d on_a = p + ((t - pa0) / d.norm()) * d, on_b = q + ((t - pb0) / de) * e;
-    points.push_back({0.5 * (on_a + on_b), n.dot(on_a - on_b),
+    out.points.push_back({0.5 * (on_a + on_b), n.dot(on_a - on_b),
                       mixFeature(mixFeature(mixFeature(6u, std::uint32_t(a0)), std::uint32_t(b0)), std::uint32_t(end))});
   }
   out.normal = n;
-  out.points = std::move(points);
   return true;
 }
 
