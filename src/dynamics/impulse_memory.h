@@ -21,6 +21,7 @@ struct ImpulseRecord {
   Eigen::Vector3d local = Eigen::Vector3d::Zero();     // the contact point in body A's frame
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();   // N s on B, world axes (normal + friction)
   double landing_speed = 0;   // m/s: approach speed of a landing closed speculatively, owed a bounce
+  int landing_carried = 0;    // steps that bounce has been carried past a step that did not touch
 };
 
 class ImpulseMemory {

@@ -8,6 +8,16 @@
 #include "dynamics/island_impulses.h"
 
 namespace tumble {
+namespace {
+
+// How many steps a landing's bounce is carried while the contact stays short of touching (within
+// the margin, pressed by a normal impulse, its gap above the tolerance). One covers a landing that
+// rounding leaves a hair apart. Carried for ever, a steel ball landing at 11.5 m/s on a block and
+// then pressing on it a few micrometres apart was owed its bounce for 13 steps, and took 2.3 m/s
+// off the block it had long been riding with: 65 J from nowhere.
+constexpr int kOwedCarries = 1;
+
+}  // namespace
 
 void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
                             const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats) {
@@ -20,7 +30,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     const Contact& c = contacts[i];
     all[i] = &c;
     last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
-    owed[i] = last[i] ? last[i]->landing_speed : 0;
+    owed[i] = last[i] && last[i]->landing_carried <= kOwedCarries ? last[i]->landing_speed : 0;
     const double gap = -c.depth;
     want[i] = -std::max(gap, 0.0) / dt;
     const double u = std::max(approach[i], owed[i]);
@@ -88,9 +98,12 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   for (std::size_t i = 0; i < m; ++i) {
     const Contact& c = contacts[i];
     records[i] = impulseRecord(world, c, impulse[i]);
-    // A landing the margin closed this step (pushed, not yet touching) is owed its bounce.
+    // A landing the margin closed this step (pushed, not yet touching) is owed its bounce; one
+    // still short of touching a step later carries what it was owed, once.
     const bool landing = -c.depth > settings.contact.tolerance_m && normal_impulse[i] > 0;
+    const bool carried = landing && owed[i] > 0 && owed[i] > approach[i];   // owed > 0: a record exists
     records[i].landing_speed = landing ? std::max(approach[i], owed[i]) : 0;
+    records[i].landing_carried = carried ? last[i]->landing_carried + 1 : 0;
   }
   memory_.replace(std::move(records));
 }
