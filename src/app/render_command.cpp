@@ -35,7 +35,6 @@ struct RenderOptions {
   SceneOptions scene;
   std::string output, size, frames, shaders, camera;
   std::optional<int> start, end, crf, samples, shadow_map_size;
-  std::optional<double> time_scale;
   bool overwrite = false, skip_existing = false, dry_run = false;
   std::string check_against;   // folder of approved frames; empty: no check
   std::string stats;           // --stats FILE.json; empty: none
@@ -72,7 +71,6 @@ void applyRenderOverrides(const RenderOptions& o, Scene& scene) {
   }
   if (o.crf) scene.render.crf = *o.crf;
   if (o.shadow_map_size) scene.render.shadow_map_size = *o.shadow_map_size;
-  if (o.time_scale) setTimeScale(scene, *o.time_scale);
 }
 
 // Refuses to replace what exists unless asked (-y), before any work is done; with --skip-existing
@@ -278,9 +276,6 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   cmd->add_option("--crf", o->crf, "H.264 quality, 0 (lossless) .. 51 (worst); default 23")
       ->check(CLI::Range(0, 51));
   cmd->add_option("--samples", o->samples, "MSAA samples: 1, 2 or 4");
-  cmd->add_option("--time-scale", o->time_scale,
-                  "Slow motion: S simulated seconds per second of the clip (0.25: four times the frames per "
-                  "simulated second, each at its own instant); the step must divide the new frame interval");
   cmd->add_option("--shadow-map-size", o->shadow_map_size, "Shadow map texels per side")
       ->check(CLI::Range(256, 8192));
   cmd->add_option("--shaders", o->shaders,

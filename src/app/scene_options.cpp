@@ -23,6 +23,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->allow_extra_args(false);
   command.add_option("--fps", o.fps, "Frames per second (overrides render.fps)");
   command.add_option("--duration", o.duration_s, "Seconds to simulate (overrides render.duration_s)");
+  command.add_option("--time-scale", o.time_scale,
+                     "Slow motion: S simulated seconds per second of the clip (0.25: four times the frames per "
+                     "simulated second, each at its own instant); the step must divide the new frame interval. "
+                     "Give the same scale to simulate --trajectory and render --from-trajectory");
   command.add_option("--dt", o.dt_s, "Simulation step in s; must divide 1/fps (overrides simulation.step.dt)");
   command.add_option("--integrator", o.integrator, "rk4 | semi_implicit_euler (overrides simulation.step.integrator)")
       ->check(CLI::IsMember({"rk4", "semi_implicit_euler"}));
@@ -76,6 +80,7 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
                                                          : ContactModel::Auto,
                     "--contact-model");
   if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
+  if (o.time_scale) setTimeScale(scene, *o.time_scale);   // last: it divides the step the flags above set
   return scene;
 }
 

@@ -20,6 +20,7 @@ struct SceneOptions {
   bool no_sleep = false;        // --no-sleep: simulation.step.sleep.enabled = false
   std::optional<int> fps;
   std::optional<double> duration_s;
+  std::optional<double> time_scale;   // --time-scale S: slow motion, S simulated seconds per clip second
   bool quiet = false, verbose = false;
   bool keep_going = false;   // numerical faults are counted and reported, not fatal (render, simulate)
 };

@@ -57,7 +57,7 @@ Trajectory readTrajectoryFor(const Scene& scene, const std::vector<std::string>&
   const std::string hash = motionHash(scene);
   if (header["motion-hash"] != hash)
     refuse(file, "simulated from another scene than " + scene.file.string() + " (or with other --fps, --dt, "
-                 "--integrator, --contact-model or --no-sleep): its motion hash is " + header["motion-hash"] +
+                 "--time-scale, --integrator, --contact-model or --no-sleep): its motion hash is " + header["motion-hash"] +
                  ", this scene's " + hash, scene);
   const std::size_t bodies = body_names.size();
   if (bodies == 0) throw Error(ExitCode::BadInput, scene.file.string() + ": the scene has no bodies to draw");

@@ -59,3 +59,18 @@ TEST_CASE("a time scale the step does not divide is a usage error (64), and noth
   // A finer step makes it divide: 1/300 s steps, 30 to a frame, 3 to a slow one.
   CHECK(runTumble("render " + kScene + " --dt 0.0033333333 --time-scale 0.1 --dry-run").exit_code == 0);
 }
+
+TEST_CASE("a slow-motion clip renders from a trajectory simulated at the same time scale, bit for bit",
+          "[cli][time-scale][scale-out]") {
+  fs::path dir = freshDir("from_trajectory");
+  const std::string csv = (dir / "slow.csv").string();
+  REQUIRE(runTumble("simulate -q " + kScene + " --time-scale 0.25 --trajectory " + csv).exit_code == 0);
+  REQUIRE(runTumble("render -q " + kScene + " --time-scale 0.25 --frames 5 -o " + (dir / "direct/").string()).exit_code == 0);
+  REQUIRE(runTumble("render -q " + kScene + " --time-scale 0.25 --frames 5 --from-trajectory " + csv + " -o " +
+                    (dir / "from/").string()).exit_code == 0);
+  CHECK(tumble::readPng(dir / "from" / "frame_0005.png").pixels == tumble::readPng(dir / "direct" / "frame_0005.png").pixels);
+  // At another scale the trajectory's frames are not the clip's: refused, naming the flag.
+  auto r = runTumble("render -q " + kScene + " --frames 5 --from-trajectory " + csv + " -o " + (dir / "normal/").string());
+  CHECK(r.exit_code == 65);
+  CHECK_THAT(r.output, Catch::Contains("--time-scale"));
+}
