@@ -13,6 +13,8 @@
 
 namespace tumble {
 
+class ImpulseMemory;
+
 class ContactModelStep {
  public:
   virtual ~ContactModelStep() = default;
@@ -26,6 +28,9 @@ class ContactModelStep {
   // Energy the model holds outside the bodies' motion at the end of the step (J): a compliant
   // contact's spring. The energy check counts it, so an elastic bounce is not energy from nowhere.
   virtual double storedEnergy() const { return 0; }
+  // Each contact's impulse of the last step (N s on B, over settings.dt: a resting force times dt),
+  // read by overlays; null where the model keeps none (the penalty model's springs).
+  virtual const ImpulseMemory* lastImpulses() const { return nullptr; }
   // The model that actually runs the steps: the automatic one names its choice.
   virtual ContactModel running(ContactModel asked) const { return asked; }
 };

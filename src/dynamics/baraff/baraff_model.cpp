@@ -5,6 +5,7 @@
 
 #include "dynamics/baraff/collisions.h"
 #include "dynamics/baraff/drift_correction.h"
+#include "dynamics/baraff/impact_log.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
 
@@ -32,10 +33,13 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   if (shared.has_contacts) {
     bool hit = false;
     const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
+    ImpactLogger impacts;   // overlays only: reads the state around the impulses, writes none
+    if (shared.impact_log) impacts.before(world, shared.contacts, settings.contact);
     shared.timed(Collide, [&] {
       hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, settings.dt,
                                counters.contacts);
     });
+    if (shared.impact_log && hit) impacts.after(world, *shared.impact_log);
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
   }
   shared.timed(Forces, [&] {

@@ -29,6 +29,7 @@ class BaraffModel final : public ContactModelStep {
  public:
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+  const ImpulseMemory* lastImpulses() const override { return &resting_memory_.last; }
 
  private:
   // One sub-step of at most `remaining` seconds; returns its length.

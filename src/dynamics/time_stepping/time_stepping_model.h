@@ -21,6 +21,7 @@ class TimeSteppingModel final : public ContactModelStep {
  public:
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+  const ImpulseMemory* lastImpulses() const override { return &impulses_.memory(); }
 
  private:
   ContactImpulses impulses_;
