@@ -123,7 +123,13 @@ DrawMarks overlayMarks(const OverlaySpec& spec, const OverlayScales& scales, con
       m.dots.push_back({f(s.x), overlay_colour::kVelocity});
       arrow(m, s.x, s.x + s.v * scales.speed_s, eye, overlay_colour::kVelocity);
     }
-  if (spec.has(OverlayKind::Contacts))
+  if (spec.has(OverlayKind::Contacts)) {
+    // The impacts since the frame before (the Baraff model's, resolved between frames), as colliding.
+    for (const ImpactMark& i : record.impacts) {
+      const Eigen::Vector3d n = i.on == i.b ? i.normal : Eigen::Vector3d(-i.normal);
+      m.segments.push_back({f(i.point), f(i.point + n * (0.5 * scales.length_m)), overlay_colour::kColliding});
+      m.dots.push_back({f(i.point), overlay_colour::kColliding});
+    }
     for (const RecordedContact& c : record.contacts) {
       const Eigen::Vector3f colour = stateColour(c);
       // The normal as it pushes the body the marks are drawn on.
@@ -131,6 +137,7 @@ DrawMarks overlayMarks(const OverlaySpec& spec, const OverlayScales& scales, con
       m.segments.push_back({f(c.point), f(c.point + n * (0.5 * scales.length_m)), colour});
       m.dots.push_back({f(c.point), colour});
     }
+  }
   return m;
 }
 

@@ -163,7 +163,8 @@ int run(const RenderOptions& o) {
   }
   resolveExisting(o, target, frames);
   if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
-  if (!frames.empty()) overlays.checkOutputs(target, o.overwrite);
+  // Of a sharded render, the last chunk writes the energy plot: it alone simulates the whole clip.
+  if (!frames.empty() && (!shard || shard->index == shard->count)) overlays.checkOutputs(target, o.overwrite);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
     return 0;

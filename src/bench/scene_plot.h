@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "plot/canvas.h"
 #include "bench/run_point.h"
+#include "bench/series_style.h"
+#include "plot/canvas.h"
 
 namespace tumble::bench {
 

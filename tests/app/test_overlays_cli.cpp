@@ -96,3 +96,13 @@ TEST_CASE("overlays change the frames, not the motion, and are deterministic", "
                     " --set 'overlays=[\"contacts\",\"hud\"]'").exit_code == 0);
   CHECK(readFile(a) == readFile(b));
 }
+
+TEST_CASE("of a sharded render, the last chunk alone writes the energy plot", "[overlays][cli]") {
+  const fs::path dir = freshTempDir("tumble_overlay_shards");
+  const std::string render = "render " + kCubeDrop + " --duration 0.5 --size 160x120 -q -o " + (dir / "f/").string() +
+                             " --overlay energy_plot --shard ";
+  REQUIRE(runTumble(render + "1/2").exit_code == 0);
+  CHECK_FALSE(fs::exists(dir / "f/cube_drop.energy.png"));
+  REQUIRE(runTumble(render + "2/2").exit_code == 0);
+  CHECK(fs::exists(dir / "f/cube_drop.energy.svg"));
+}
