@@ -5,7 +5,6 @@
 #include "app/energy_plot_file.h"
 #include "app/overlay_text.h"
 #include "base/error.h"
-#include "plot/canvas.h"
 #include "render/overlay_composite.h"
 
 namespace tumble {
@@ -52,11 +51,7 @@ void OverlaySession::addMarks(DrawFrame& frame, int frame_number, const Trajecto
 }
 
 void OverlaySession::addText(RgbImage& image, int frame_number, int frames) const {
-  const bool hud = spec_.has(OverlayKind::Hud) && !records_.empty();
-  const bool legend = spec_.has(OverlayKind::Contacts) || spec_.has(OverlayKind::Forces) || spec_.has(OverlayKind::Velocities);
-  if (!hud && !legend) return;
-  plot::Canvas layer(plot::Canvas::Target::Layer, image.width, image.height);
-  if (hud) {
+  if (spec_.has(OverlayKind::Hud) && !records_.empty()) {
     const FrameRecord& r = records_[static_cast<std::size_t>(frame_number - 1)];
     HudFigures h;
     h.time_s = r.time;
@@ -69,10 +64,11 @@ void OverlaySession::addText(RgbImage& image, int frame_number, int frames) cons
     h.start_total = records_.front().total();
     h.contacts = static_cast<int>(r.contacts.size());
     h.deepest_m = r.deepest_m;
-    drawHud(layer, h, image.height);
+    const OverlayPanel hud = hudPanel(h, image.height);
+    compositeOver(image, hud.layer, hud.x, hud.y);
   }
-  if (legend) drawMarksLegend(layer, spec_, scales_, image.height);
-  compositeOver(image, layer.layer());
+  if (const std::optional<OverlayPanel> legend = legendPanel(spec_, scales_, image.height))
+    compositeOver(image, legend->layer, legend->x, legend->y);
 }
 
 void OverlaySession::checkOutputs(const OutputTarget& target, bool overwrite) {

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "plot/canvas.h"
+
 namespace tumble {
 namespace {
 
@@ -40,19 +42,23 @@ struct Row {
   plot::Rgb key{};
 };
 
-// Rows on a panel whose top-left (or bottom-left, `from_bottom`) corner is `margin` px in.
-void panel(plot::Canvas& c, const std::vector<Row>& rows, double font_px, int frame_height, bool from_bottom) {
+// Rows on a panel whose top-left (or bottom-left, `from_bottom`) corner is `margin` px in from the
+// frame's: drawn on a layer of the panel's own size, so that only its pixels are laid over the frame.
+OverlayPanel panel(const std::vector<Row>& rows, double font_px, int frame_height, bool from_bottom) {
   const plot::Font font{font_px, false};
   const double pad = std::round(font_px * 0.45), line = std::round(font_px * 1.3), margin = std::round(font_px * 0.4);
   const double key_w = std::round(font_px * 1.1);
   double width = 0;
-  for (const Row& r : rows) width = std::max(width, c.textWidth(r.text, font) + (r.keyed ? key_w + pad : 0));
+  {
+    plot::Canvas measure(plot::Canvas::Target::Layer, 1, 1);
+    for (const Row& r : rows) width = std::max(width, measure.textWidth(r.text, font) + (r.keyed ? key_w + pad : 0));
+  }
   const double height = line * static_cast<double>(rows.size()) + 2 * pad - (line - font_px);
-  const double x0 = margin, y0 = from_bottom ? frame_height - margin - height : margin;
-  c.fillRect(x0, y0, x0 + width + 2 * pad, y0 + height, kPanel, kPanelAlpha);
-  double y = y0 + pad + font_px / 2;
+  plot::Canvas c(plot::Canvas::Target::Layer, static_cast<int>(std::ceil(width + 2 * pad)), static_cast<int>(height));
+  c.fillRect(0, 0, width + 2 * pad, height, kPanel, kPanelAlpha);
+  double y = pad + font_px / 2;
   for (const Row& r : rows) {
-    double x = x0 + pad;
+    double x = pad;
     if (r.keyed) {
       c.fillRect(x, y - font_px * 0.2, x + key_w, y + font_px * 0.2, r.key, 1);
       x += key_w + pad;
@@ -60,13 +66,16 @@ void panel(plot::Canvas& c, const std::vector<Row>& rows, double font_px, int fr
     c.text(x, y, r.text, font, kText);
     y += line;
   }
+  const int x0 = static_cast<int>(margin);
+  const int y0 = from_bottom ? frame_height - static_cast<int>(margin + height) : static_cast<int>(margin);
+  return {c.layer(), x0, y0};
 }
 
 }  // namespace
 
 double overlayFontPx(int frame_height) { return std::max(8.0, std::round(frame_height / 40.0)); }
 
-void drawHud(plot::Canvas& c, const HudFigures& h, int frame_height) {
+OverlayPanel hudPanel(const HudFigures& h, int frame_height) {
   const double total = h.kinetic + h.potential, drift = total - h.start_total;
   // Energies below a billionth of the scene's are rounding: shown as 0.
   const double floor = 1e-9 * std::max({std::abs(h.start_total), std::abs(total), std::abs(h.kinetic), 1e-300});
@@ -80,10 +89,10 @@ void drawHud(plot::Canvas& c, const HudFigures& h, int frame_height) {
   const double deepest = h.deepest_m < 1e-12 ? 0 : h.deepest_m;   // below a picometre: rounding
   const std::string depth = deepest < 1e-4 ? format("%.3g \u00b5m", 1e6 * deepest) : format("%.3g mm", 1e3 * deepest);
   rows.push_back({"contacts " + std::to_string(h.contacts) + "   deepest " + depth});
-  panel(c, rows, overlayFontPx(frame_height), frame_height, false);
+  return panel(rows, overlayFontPx(frame_height), frame_height, false);
 }
 
-void drawMarksLegend(plot::Canvas& c, const OverlaySpec& spec, const OverlayScales& s, int frame_height) {
+std::optional<OverlayPanel> legendPanel(const OverlaySpec& spec, const OverlayScales& s, int frame_height) {
   using namespace overlay_colour;
   std::vector<Row> rows;
   if (spec.has(OverlayKind::Contacts)) {
@@ -98,8 +107,8 @@ void drawMarksLegend(plot::Canvas& c, const OverlaySpec& spec, const OverlayScal
   }
   if (spec.has(OverlayKind::Velocities))
     rows.push_back({"velocity: 1 m = " + scaleText(1 / s.speed_s, "m/s"), true, rgb(kVelocity)});
-  if (rows.empty()) return;
-  panel(c, rows, overlayFontPx(frame_height), frame_height, true);
+  if (rows.empty()) return std::nullopt;
+  return panel(rows, overlayFontPx(frame_height), frame_height, true);
 }
 
 }  // namespace tumble

@@ -7,8 +7,8 @@
 namespace tumble {
 
 // out = layer + (1 - alpha) frame per channel, the layer's colour premultiplied by its alpha, with
-// exact integer rounding (the same inputs give the same bytes). Throws Error(Software) when the
-// sizes differ.
-void compositeOver(RgbImage& frame, const RgbaImage& layer);
+// exact integer rounding (the same inputs give the same bytes). The layer's top-left corner goes at
+// (x, y) in the frame; what falls outside the frame is left out.
+void compositeOver(RgbImage& frame, const RgbaImage& layer, int x = 0, int y = 0);
 
 }  // namespace tumble

@@ -2,7 +2,6 @@
 // image (render/overlay_composite.h).
 #include <catch2/catch.hpp>
 
-#include "base/error.h"
 #include "box_frame.h"
 #include "box_mesh.h"
 #include "render_config.h"
@@ -74,11 +73,15 @@ TEST_CASE("mark triangles: exact pixel widths, and nothing behind the camera", "
   CHECK(v.empty());
 }
 
-TEST_CASE("a layer composites over a frame: transparent keeps, opaque replaces, half blends", "[render][overlays]") {
+TEST_CASE("a layer composites over a frame: transparent keeps, opaque replaces, half blends, outside is cut", "[render][overlays]") {
   RgbImage frame{2, 1, {100, 100, 100, 100, 100, 100}};
   RgbaImage layer{2, 1, {0, 0, 0, 0, 128, 0, 0, 128}};   // clear; red at alpha 0.5 (premultiplied)
   compositeOver(frame, layer);
   CHECK(frame.pixels == std::vector<std::uint8_t>{100, 100, 100, 178, 50, 50});
-  RgbaImage wrong{1, 1, {0, 0, 0, 0}};
-  CHECK_THROWS_AS(compositeOver(frame, wrong), Error);
+  // Placed at an offset, and cut at the frame's edge: only the pixel inside changes.
+  RgbImage wide{3, 1, {0, 0, 0, 0, 0, 0, 0, 0, 0}};
+  compositeOver(wide, RgbaImage{2, 1, {10, 20, 30, 255, 40, 50, 60, 255}}, 2, 0);
+  CHECK(wide.pixels == std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 10, 20, 30});
+  compositeOver(wide, RgbaImage{1, 1, {99, 99, 99, 255}}, -1, 0);   // wholly outside
+  CHECK(wide.pixels[0] == 0);
 }
