@@ -47,6 +47,13 @@ TEST_CASE("a scene's overlay names are checked where they stand in the file", "[
   CHECK_THAT(set.output, Catch::Contains("did you mean \"forces\"?"));
 }
 
+TEST_CASE("check lists a scene's overlays", "[overlays][cli]") {
+  auto r = runTumble("check " + kCubeDrop + " --set 'overlays=[\"hud\",\"velocities\"]' --set 'overlay_bodies=[\"cube\"]'");
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("overlays  hud, velocities"));
+  CHECK_THAT(r.output, Catch::Contains("velocities of cube"));
+}
+
 TEST_CASE("from a trajectory file only velocities can be drawn", "[overlays][cli]") {
   const fs::path dir = freshTempDir("tumble_overlay_trajectory");
   const std::string csv = (dir / "drop.csv").string();
