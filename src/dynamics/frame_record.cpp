@@ -18,7 +18,7 @@ void worldEnergy(const World& world, double& kinetic, double& potential) {
 }
 
 FrameRecorder::FrameRecorder(const World& world, const StepSettings& settings)
-    : awake_(world), detector_(awake_), contact_(settings.contact), dt_(settings.dt) {}
+    : awake_(world), detector_(awake_), contact_(settings.contact) {}
 
 FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, std::vector<ImpactMark>& impacts) {
   FrameRecord out;
@@ -37,7 +37,7 @@ FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, 
     to.asleep = false;
   }
   detector_.detect(awake_, contact_, found_);
-  const ImpulseMemory* memory = pipeline.lastImpulses();
+  const StepImpulses impulses = pipeline.lastImpulses();
   for (const Contact& c : found_) {
     RecordedContact r;
     r.a = c.a;
@@ -45,10 +45,10 @@ FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, 
     r.point = c.point;
     r.normal = c.normal;
     r.depth = c.depth;
-    if (memory)
-      if (const ImpulseRecord* rec = memory->find(world, c, ImpulseMemory::kMatchRadius)) {
+    if (impulses.memory && impulses.span_s > 0)
+      if (const ImpulseRecord* rec = impulses.memory->find(world, c, ImpulseMemory::kMatchRadius)) {
         r.has_force = rec->impulse.squaredNorm() > 0;
-        r.force = rec->impulse / dt_;
+        r.force = rec->impulse / impulses.span_s;
       }
     // In force: touching within the tolerance, or pushing (a time-stepping contact at a gap).
     if (c.depth < -contact_.tolerance_m && !r.has_force) continue;

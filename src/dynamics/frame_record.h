@@ -61,7 +61,6 @@ class FrameRecorder {
   World awake_;                 // the world's state, sleepers moving (declared before the detector)
   ContactDetector detector_;
   ContactSettings contact_;
-  double dt_;
   std::vector<Contact> found_;
 };
 

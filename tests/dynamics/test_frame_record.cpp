@@ -111,3 +111,16 @@ TEST_CASE("frame records hold contacts, forces, impacts and the energy", "[overl
     CHECK(forces > 100);
   }
 }
+
+TEST_CASE("a resting cube's contact forces add up to its weight", "[overlays]") {
+  // 1 kg on the ground: the forces over the last step, impulse / step, hold 9.81 N between them.
+  for (ContactModel model : {ContactModel::Baraff, ContactModel::TimeStepping}) {
+    INFO((model == ContactModel::Baraff ? "baraff" : "time_stepping"));
+    const Run run = simulate("rest", model, 0.3, true);
+    for (std::size_t k = 3; k < run.records.size(); ++k) {
+      double normal = 0;
+      for (const RecordedContact& c : run.records[k].contacts) normal += std::abs(c.force.dot(c.normal));
+      CHECK(normal == Approx(9.81).epsilon(0.01));
+    }
+  }
+}

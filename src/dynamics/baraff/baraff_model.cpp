@@ -12,6 +12,7 @@
 namespace tumble {
 
 void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  last_dt_ = settings.dt;
   const double start_time = world.time;
   const double done = tuning::kStepRemainder * settings.dt;
   double remaining = settings.dt;
