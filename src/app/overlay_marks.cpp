@@ -91,6 +91,7 @@ OverlayScales overlayScales(const World& world, const std::vector<double>& radii
   for (const FrameRecord& r : records)
     for (const ImpactMark& m : r.impacts) impulse = std::max(impulse, m.impulse.norm());
   s.impulse_ns_per_m = roundUp125((impulse > 0 ? impulse : 1) / (2 * s.length_m));
+  s.impacts = impulse > 0;
   for (const std::vector<BodySample>& frame : trajectory.frames)
     for (int b : velocity_bodies) speed = std::max(speed, frame[static_cast<std::size_t>(b)].v.norm());
   // The fastest body's arrow is about three sizes long.

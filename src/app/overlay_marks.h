@@ -18,6 +18,7 @@ struct OverlayScales {
   double length_m = 0.1;       // a body's typical size: the contact normals' length
   double force_n_per_m = 1;    // arrow length: a force of this many N per m of arrow (1, 2 or 5 x 10^k)
   double impulse_ns_per_m = 1; // impacts' impulses, N s per m
+  bool impacts = false;        // the clip has impacts (the Baraff model's) to draw
   double speed_s = 1;          // velocity arrows: m of arrow per m/s
   double longest_m = 1;        // force and impulse arrows are cut at this length
 };

@@ -85,7 +85,7 @@ OverlayPanel hudPanel(const HudFigures& h, int frame_height) {
   rows.push_back({h.model + "   dt " + format("%.3g ms", 1e3 * h.dt_s)});
   rows.push_back({figure("E %.4g J", total, floor) + figure(" = K %.4g", h.kinetic, floor) +
                   figure(" + U %.4g", h.potential, floor)});
-  rows.push_back({figure("drift %+.3g J", drift, floor) + figure(" (%+.3g %%)", std::abs(drift) < floor ? 0 : share, 1e-300)});
+  rows.push_back({figure("drift %+.4g J", drift, floor) + figure(" (%+.3g %%)", std::abs(drift) < floor ? 0 : share, 1e-300)});
   const double deepest = h.deepest_m < 1e-12 ? 0 : h.deepest_m;   // below a picometre: rounding
   const std::string depth = deepest < 1e-4 ? format("%.3g \u00b5m", 1e6 * deepest) : format("%.3g mm", 1e3 * deepest);
   rows.push_back({"contacts " + std::to_string(h.contacts) + "   deepest " + depth});
@@ -103,7 +103,7 @@ std::optional<OverlayPanel> legendPanel(const OverlaySpec& spec, const OverlaySc
   }
   if (spec.has(OverlayKind::Forces)) {
     rows.push_back({"force: 1 m = " + scaleText(s.force_n_per_m, "N"), true, rgb(kForce)});
-    rows.push_back({"impulse: 1 m = " + scaleText(s.impulse_ns_per_m, "N s"), true, rgb(kImpulse)});
+    if (s.impacts) rows.push_back({"impulse: 1 m = " + scaleText(s.impulse_ns_per_m, "N s"), true, rgb(kImpulse)});
   }
   if (spec.has(OverlayKind::Velocities))
     rows.push_back({"velocity: 1 m = " + scaleText(1 / s.speed_s, "m/s"), true, rgb(kVelocity)});
