@@ -10,7 +10,7 @@
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
 #include "app/overlay_options.h"
-#include "app/overlay_session.h"
+#include "app/overlay_render.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/render_dry_run.h"
@@ -149,7 +149,7 @@ int run(const RenderOptions& o) {
   Scene scene = loadSceneWithOverrides(o.scene);
   applyRenderOverrides(o, scene);
   const CameraSpec& camera = pickCamera(scene, o.camera);
-  OverlaySession overlays(scene, resolveOverlays(scene.overlays, o.overlays));
+  OverlayRender overlays(scene, resolveOverlays(scene.overlays, o.overlays));
   overlays.checkMotionSource(!o.from_trajectory.empty());
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
   std::optional<Shard> shard = chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv);

@@ -19,9 +19,9 @@
 
 namespace tumble {
 
-class OverlaySession {
+class OverlayRender {
  public:
-  OverlaySession(const Scene& scene, OverlaySpec spec);
+  OverlayRender(const Scene& scene, OverlaySpec spec);
   bool any() const { return spec_.any(); }
   // Whether the overlays need the simulation's records (all but velocities do): a render from a
   // trajectory file has only the motion, and refuses them (Error(Usage), 64).

@@ -1,4 +1,4 @@
-#include "app/overlay_session.h"
+#include "app/overlay_render.h"
 
 #include <cstdio>
 
@@ -9,9 +9,9 @@
 
 namespace tumble {
 
-OverlaySession::OverlaySession(const Scene& scene, OverlaySpec spec) : scene_name_(scene.name), spec_(std::move(spec)) {}
+OverlayRender::OverlayRender(const Scene& scene, OverlaySpec spec) : scene_name_(scene.name), spec_(std::move(spec)) {}
 
-void OverlaySession::checkMotionSource(bool from_trajectory) const {
+void OverlayRender::checkMotionSource(bool from_trajectory) const {
   if (!from_trajectory) return;
   for (OverlayKind k : spec_.kinds)
     if (k != OverlayKind::Velocities)
@@ -20,17 +20,17 @@ void OverlaySession::checkMotionSource(bool from_trajectory) const {
                                    "--from-trajectory");
 }
 
-void OverlaySession::attach(Simulator& simulator, const StepSettings& settings) {
+void OverlayRender::attach(Simulator& simulator, const StepSettings& settings) {
   if (!any()) return;
   recorder_.emplace(simulator.world(), settings);
   simulator.setImpactLog(&impacts_);
 }
 
-void OverlaySession::onFrame(const Simulator& simulator) {
+void OverlayRender::onFrame(const Simulator& simulator) {
   if (recorder_) records_.push_back(recorder_->record(simulator.world(), simulator.pipeline(), impacts_));
 }
 
-void OverlaySession::prepare(const World& world, const SceneDrawing& drawing, const Trajectory& trajectory,
+void OverlayRender::prepare(const World& world, const SceneDrawing& drawing, const Trajectory& trajectory,
                              const std::string& model, double dt_s) {
   if (!any()) return;
   world_ = &world;
@@ -40,7 +40,7 @@ void OverlaySession::prepare(const World& world, const SceneDrawing& drawing, co
   dt_s_ = dt_s;
 }
 
-void OverlaySession::addMarks(DrawFrame& frame, int frame_number, const Trajectory& trajectory, int frame_height) const {
+void OverlayRender::addMarks(DrawFrame& frame, int frame_number, const Trajectory& trajectory, int frame_height) const {
   frame.marks = DrawMarks{};
   if (!any() || !world_) return;
   static const FrameRecord kNone;   // from a trajectory file: velocities only, no record
@@ -50,7 +50,7 @@ void OverlaySession::addMarks(DrawFrame& frame, int frame_number, const Trajecto
                              frame.camera.eye, frame_height);
 }
 
-void OverlaySession::addText(RgbImage& image, int frame_number, int frames) const {
+void OverlayRender::addText(RgbImage& image, int frame_number, int frames) const {
   if (spec_.has(OverlayKind::Hud) && !records_.empty()) {
     const FrameRecord& r = records_[static_cast<std::size_t>(frame_number - 1)];
     HudFigures h;
@@ -71,13 +71,13 @@ void OverlaySession::addText(RgbImage& image, int frame_number, int frames) cons
     compositeOver(image, legend->layer, legend->x, legend->y);
 }
 
-void OverlaySession::checkOutputs(const OutputTarget& target, bool overwrite) {
+void OverlayRender::checkOutputs(const OutputTarget& target, bool overwrite) {
   if (!spec_.has(OverlayKind::EnergyPlot)) return;
   plot_png_ = energyPlotPath(target, scene_name_);
   checkEnergyPlotOutputs(plot_png_, overwrite);
 }
 
-void OverlaySession::writePlots(const Trajectory& trajectory, bool overwrite, bool quiet) const {
+void OverlayRender::writePlots(const Trajectory& trajectory, bool overwrite, bool quiet) const {
   if (plot_png_.empty() || records_.empty()) return;
   plot::EnergySeries series;
   series.title = scene_name_ + ": energy (" + model_ + ")";
