@@ -77,6 +77,12 @@ int run(const SceneOptions& o) {
               scene.lighting.directional.size());
   printCameras(scene);
   std::printf("output    %s\n", scene.output.value_or("out/" + scene.name + ".mp4").c_str());
+  if (scene.overlays.any()) {
+    std::string kinds;
+    for (OverlayKind k : scene.overlays.kinds) kinds += (kinds.empty() ? "" : ", ") + overlayName(k);
+    std::printf("overlays  %s\n", kinds.c_str());
+    for (const std::string& b : scene.overlays.bodies) std::printf("  velocities of %s\n", b.c_str());
+  }
   return 0;
 }
 

@@ -9,6 +9,8 @@
 #include "app/frame_provenance.h"
 #include "app/frame_selection.h"
 #include "app/interrupt.h"
+#include "app/overlay_options.h"
+#include "app/overlay_render.h"
 #include "app/pipeline_stats.h"
 #include "app/progress.h"
 #include "app/render_dry_run.h"
@@ -39,6 +41,7 @@ struct RenderOptions {
   std::string check_against;   // folder of approved frames; empty: no check
   std::string stats;           // --stats FILE.json; empty: none
   std::string from_trajectory;  // motion from this CSV instead of simulating; empty: simulate
+  std::vector<std::string> overlays;   // --overlay, beside the scene's "overlays"
   ShardRequest shard;
   CheckOptions check;
 };
@@ -126,6 +129,16 @@ nlohmann::json renderStats(const PhaseTimes& t, const Simulator* simulator, cons
   return stats;
 }
 
+const char* modelName(ContactModel m) {
+  switch (m) {
+    case ContactModel::Baraff: return "baraff";
+    case ContactModel::TimeStepping: return "time_stepping";
+    case ContactModel::Penalty: return "penalty";
+    case ContactModel::Auto: break;
+  }
+  return "auto";
+}
+
 int run(const RenderOptions& o) {
   if (!o.check_against.empty() && !std::filesystem::is_directory(o.check_against)) {
     std::fprintf(stderr, "tumble: --check-against: %s is not a folder of frames\n", o.check_against.c_str());
@@ -134,6 +147,8 @@ int run(const RenderOptions& o) {
   Scene scene = loadSceneWithOverrides(o.scene);
   applyRenderOverrides(o, scene);
   const CameraSpec& camera = pickCamera(scene, o.camera);
+  OverlayRender overlays(scene, resolveOverlays(scene.overlays, o.overlays));
+  overlays.checkMotionSource(!o.from_trajectory.empty());
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
   std::optional<Shard> shard = chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv);
   if (shard) frames = shardFrames(frames, *shard);
@@ -146,6 +161,8 @@ int run(const RenderOptions& o) {
   }
   resolveExisting(o, target, frames);
   if (!o.stats.empty()) checkStatsOutput(o.stats, o.overwrite);
+  // Of a sharded render, the last chunk writes the energy plot: it alone simulates the whole clip.
+  if (!frames.empty() && (!shard || shard->index == shard->count)) overlays.checkOutputs(target, o.overwrite);
   if (frames.empty()) {
     if (!o.scene.quiet) std::fprintf(stderr, "tumble: every frame already exists; nothing to do\n");
     return 0;
@@ -177,8 +194,10 @@ int run(const RenderOptions& o) {
     trajectory = readTrajectoryFor(scene, names, o.from_trajectory, last_simulated);
   } else {
     simulator.emplace(std::move(built.world), plan);
+    overlays.attach(*simulator, plan.step);
     Progress sim_progress("simulate", plan.frames, !o.scene.quiet);
     trajectory = simulator->run([&](int f) {
+      overlays.onFrame(*simulator);
       sim_progress.update(f);
       stopIfInterrupted("simulating", f, plan.frames);
     });
@@ -187,6 +206,8 @@ int run(const RenderOptions& o) {
     reportTarget(*simulator, o.scene.quiet);
   }
   times.simulate = secondsSince(start);
+  overlays.prepare(simulator ? simulator->world() : built.world, drawing, trajectory,
+                   modelName(simulator ? simulator->pipeline().runningModel(plan.step) : plan.step.model), plan.step.dt);
 
   RenderConfig config;
   config.width = scene.render.width;
@@ -208,6 +229,7 @@ int run(const RenderOptions& o) {
     poseInstances(drawing, trajectory.frames[frame - 1], mesh_ids);
     drawing.frame.camera = cameras[frame - 1];
     start = std::chrono::steady_clock::now();
+    overlays.addMarks(drawing.frame, frame, trajectory, scene.render.height);
     renderer->draw(drawing.frame);
     times.render_ms.push_back(1e3 * secondsSince(start));
     times.render += times.render_ms.back() / 1e3;
@@ -215,6 +237,10 @@ int run(const RenderOptions& o) {
     renderer->readBack(image);
     times.read_back_ms.push_back(1e3 * secondsSince(start));
     times.read_back += times.read_back_ms.back() / 1e3;
+    start = std::chrono::steady_clock::now();
+    overlays.addText(image, frame, scene.render.frames);   // counted as rendering
+    times.render_ms.back() += 1e3 * secondsSince(start);
+    times.render += secondsSince(start);
     start = std::chrono::steady_clock::now();
     sink->write(image, frame);
     times.encode_ms.push_back(1e3 * secondsSince(start));
@@ -235,6 +261,7 @@ int run(const RenderOptions& o) {
   }
   times.encode += secondsSince(start);
   progress.finish();
+  if (!interrupted) overlays.writePlots(trajectory, o.overwrite, o.scene.quiet);
   double wall = secondsSince(total_start);
 
   if (!o.scene.quiet || interrupted) {
@@ -295,6 +322,7 @@ std::function<int()> addRenderCommand(CLI::App& app) {
                   "Compare each frame with DIR/frame_####.png; exit 0 pass, 1 fail, 2 missing or other size");
   addCheckOptions(*cmd, o->check);
   addScaleOutOptions(*cmd, o->from_trajectory, o->shard);
+  addOverlayOption(*cmd, o->overlays);
   return [o] { return run(*o); };
 }
 

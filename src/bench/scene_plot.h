@@ -6,10 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "bench/canvas.h"
 #include "bench/run_point.h"
+#include "bench/series_style.h"
+#include "plot/canvas.h"
 
 namespace tumble::bench {
+
+using plot::Align;
+using plot::Canvas;
+using plot::Font;
 
 constexpr int kPlotWidth = 960, kPlotHeight = 600;   // px, of the PNG and of the SVG
 

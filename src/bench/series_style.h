@@ -4,16 +4,16 @@
 // shade and the marker tell the settings apart.
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <string>
+
+#include "plot/canvas.h"
 
 namespace tumble::bench {
 
-using Rgb = std::array<std::uint8_t, 3>;
+using plot::Rgb;
+using plot::Marker;
 
 enum class Family { TumbleAuto, TumbleBaraff, TumbleTimeStepping, TumblePenalty, Bullet, Ode, Mujoco, Other };
-enum class Marker { Circle, Square, TriangleUp, Diamond, TriangleDown, Cross };
 
 struct SeriesStyle {
   Rgb colour;

@@ -13,6 +13,15 @@
 
 namespace tumble {
 
+class ImpulseMemory;
+
+// Each contact's impulse over the model's last step, and that step's length (s): an impulse over
+// it divided by it is the contact's force (a resting force, or an impact spread over the step).
+struct StepImpulses {
+  const ImpulseMemory* memory = nullptr;   // null where the model keeps none
+  double span_s = 0;
+};
+
 class ContactModelStep {
  public:
   virtual ~ContactModelStep() = default;
@@ -26,6 +35,9 @@ class ContactModelStep {
   // Energy the model holds outside the bodies' motion at the end of the step (J): a compliant
   // contact's spring. The energy check counts it, so an elastic bounce is not energy from nowhere.
   virtual double storedEnergy() const { return 0; }
+  // Each contact's impulse of the last step (N s on B), read by overlays; none where the model
+  // keeps none (the penalty model's springs).
+  virtual StepImpulses lastImpulses() const { return {}; }
   // The model that actually runs the steps: the automatic one names its choice.
   virtual ContactModel running(ContactModel asked) const { return asked; }
 };

@@ -38,6 +38,18 @@ struct PipelineCounters {
   std::string target_refinement;      // how auto refined its steps to a penetration target (empty otherwise)
 };
 
+// An impact a model resolved, kept for overlays (frame_record.h) while SharedStages::impact_log
+// is set: the net impulse the impact gave one body of the pair (B, or A when B is static), at the
+// mean of the pair's colliding points. Logging reads the state and never changes it.
+struct ImpactMark {
+  double time = 0;                                     // s, when the impulse was applied
+  int a = -1, b = -1;                                  // the pair, as in Contact
+  int on = -1;                                         // the body `impulse` acted on
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();     // m, world
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // unit, from A to B
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();   // N s on `on`, world
+};
+
 struct SharedStages {
   explicit SharedStages(const World& world);
 
@@ -75,6 +87,7 @@ struct SharedStages {
   std::vector<PiecePair> pairs;      // the piece pair of each contact
   bool contacts_fresh = false;       // `contacts` hold the present state: no detection needed
   std::vector<Wrench> wrenches;      // applied forces of the (sub-)step, per body
+  std::vector<ImpactMark>* impact_log = nullptr;   // set: impacts are appended (overlays only)
 
   std::vector<StageTime> profile;
   PipelineCounters counters;

@@ -34,6 +34,8 @@ class Simulator {
                  const std::function<void(const World&)>& on_step = {});
 
   const World& world() const { return world_; }
+  // While set, the contact model appends the impacts it resolves (for overlays; frame_record.h).
+  void setImpactLog(std::vector<ImpactMark>* log) { pipeline_.setImpactLog(log); }
   const Pipeline& pipeline() const { return pipeline_; }
   const FaultCheck& faults() const { return faults_; }
   // The run measured against the scene's accuracy target; empty when the scene sets none.

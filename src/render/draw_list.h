@@ -63,6 +63,30 @@ struct DirectionalLight {
   bool casts_shadows = true;                           // at most one light casts shadows
 };
 
+// Marks laid over the shaded scene by the overlays (src/app/overlay_marks.cpp): segments and dots
+// in world space, drawn unlit with a dark outline, after the bodies and the ground and with the
+// depth test off, so that a contact between two stacked blocks, hidden inside the stack's
+// silhouette, still shows. Widths are in pixels, so marks read the same at any distance.
+// Colours are sRGB as written to the frame (no lighting, no tone mapping).
+struct DrawSegment {
+  Eigen::Vector3f from, to;   // m, world
+  Eigen::Vector3f colour;     // sRGB, 0..1
+};
+
+struct DrawDot {
+  Eigen::Vector3f at;         // m, world
+  Eigen::Vector3f colour;     // sRGB, 0..1
+};
+
+struct DrawMarks {
+  std::vector<DrawSegment> segments;
+  std::vector<DrawDot> dots;
+  float line_px = 2;          // segment width
+  float dot_px = 6;           // dot diameter
+  float outline_px = 1;       // dark rim around each, for contrast on any background
+  bool empty() const { return segments.empty() && dots.empty(); }
+};
+
 struct DrawFrame {
   DrawCamera camera;
   std::vector<DirectionalLight> lights;
@@ -70,6 +94,7 @@ struct DrawFrame {
   Eigen::Vector3f background{0.62f, 0.72f, 0.85f};    // linear RGB
   DrawGround ground;
   std::vector<DrawInstance> instances;
+  DrawMarks marks;                                     // overlays; none by default
 };
 
 }  // namespace tumble

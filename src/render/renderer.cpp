@@ -1,6 +1,6 @@
 // The OSMesa renderer: owns the context and GL objects, and runs the frame as
 //   shadow pass (bodies' depth from the shadow light) -> lit pass (faceted bodies, bodies drawn as
-//   their files hold them, ground) -> resolve.
+//   their files hold them, ground) -> overlay marks, if any -> resolve.
 #include "render/renderer.h"
 
 #include <optional>
@@ -14,6 +14,7 @@
 #include "render/gl_texture.h"
 #include "render/instance_data.h"
 #include "render/lighting.h"
+#include "render/marks_pass.h"
 #include "render/osmesa_context.h"
 #include "render/pixel_convert.h"
 #include "render/render_targets.h"
@@ -54,6 +55,7 @@ class GlRenderer final : public Renderer {
   std::unique_ptr<RenderTargets> targets_;
   std::unique_ptr<ShadowMap> shadow_map_;
   std::unique_ptr<ShaderPrograms> programs_;
+  std::unique_ptr<MarksPass> marks_;    // made on the first frame with overlay marks
   std::vector<std::unique_ptr<GlMesh>> meshes_;
   std::vector<std::unique_ptr<GlTexture>> textures_;
   std::unique_ptr<GlTexture> white_;    // the albedo map of Surface meshes without a texture
@@ -83,6 +85,7 @@ GlRenderer::~GlRenderer() {
   glDeleteBuffers(1, &instance_buffer_);
   glDeleteBuffers(1, &ground_vbo_);
   glDeleteVertexArrays(1, &ground_vao_);
+  marks_.reset();
   meshes_.clear();
   textures_.clear();
   white_.reset();
@@ -148,6 +151,10 @@ void GlRenderer::draw(const DrawFrame& frame) {
   drawBodies(frame, lit, view_proj);
   drawSurfaces(frame, lit, view_proj);
   if (frame.ground.present) drawGround(frame, lit, view_proj);
+  if (!frame.marks.empty()) {
+    if (!marks_) marks_ = std::make_unique<MarksPass>();
+    marks_->draw(frame.marks, view_proj, config_.width, config_.height, programs_->marks());
+  }
   targets_->resolve();
   // llvmpipe queues the work and rasterises on its own threads; finishing here makes draw() own
   // the rendering time and readBack() only the copy, so the summary's split is honest.

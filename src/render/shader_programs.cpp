@@ -23,6 +23,12 @@ ShaderPrograms::ShaderPrograms(std::filesystem::path dir) : source_(std::move(di
                                         ShaderStageFiles{"shadow.frag", {}});
 }
 
+const GlProgram& ShaderPrograms::marks() {
+  if (!marks_)
+    marks_ = std::make_unique<GlProgram>(source_, ShaderStageFiles{"marks.vert", {}}, ShaderStageFiles{"marks.frag", {}});
+  return *marks_;
+}
+
 const GlProgram& ShaderPrograms::get(Cache& cache, const char* name,
                                      const LightingVariant& variant) {
   auto it = cache.find(variant);

@@ -34,6 +34,8 @@ class ShaderPrograms {
   // Meshes drawn with MeshShading::Surface: interpolated normals and an albedo texture.
   const GlProgram& surface(const LightingVariant& variant) { return get(surface_, "surface", variant); }
   const GlProgram& shadow() const { return *shadow_; }
+  // Overlay marks (marks_pass.h): flat sRGB colour in NDC; compiled on first use.
+  const GlProgram& marks();
 
  private:
   using Cache = std::map<LightingVariant, std::unique_ptr<GlProgram>>;
@@ -41,7 +43,7 @@ class ShaderPrograms {
 
   ShaderSource source_;
   Cache lit_, ground_, surface_;
-  std::unique_ptr<GlProgram> shadow_;
+  std::unique_ptr<GlProgram> shadow_, marks_;
 };
 
 }  // namespace tumble::render

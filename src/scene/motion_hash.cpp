@@ -32,7 +32,7 @@ std::string readAll(const std::filesystem::path& path) {
 // validated the file, so this parse cannot fail on a scene that loaded.
 std::string motionJson(const std::string& text) {
   nlohmann::json doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  for (const char* key : {"camera", "cameras", "lights", "output", "render"}) doc.erase(key);
+  for (const char* key : {"camera", "cameras", "lights", "output", "overlay_bodies", "overlays", "render"}) doc.erase(key);
   if (doc.contains("bodies") && doc["bodies"].is_array())
     for (nlohmann::json& body : doc["bodies"])
       if (body.is_object()) {

@@ -10,7 +10,7 @@ namespace tumble {
 
 // 16 hex digits (FNV-1a, 64 bits) over: the scene's JSON as read, after --set and --patch (comments
 // and layout do not count, key order does not count) without what only changes the picture ("camera", "cameras",
-// "lights", "output", "render", and each body's colour and "draw"); the resolved timing and model, command-line
+// "lights", "output", "overlays", "overlay_bodies", "render", and each body's colour and "draw"); the resolved timing and model, command-line
 // overrides included (fps, dt, steps per frame — which --time-scale changes —, integrator, contact model, sleeping); and the bytes
 // of every mesh file the bodies read. The frame count is left out: a longer run has the same
 // first frames. Throws Error(MissingInput) if the scene file cannot be read again.

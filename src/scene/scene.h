@@ -11,6 +11,7 @@
 
 #include "dynamics/settings.h"
 #include "geometry/shape_kind.h"
+#include "scene/overlay_spec.h"
 
 namespace tumble {
 
@@ -148,6 +149,7 @@ struct Scene {
   RenderSpec render;
   SimulationSpec simulation;
   std::optional<std::string> output;                   // default -o, relative to the working dir
+  OverlaySpec overlays;                                // "overlays", "overlay_bodies": what is drawn over the frames
   std::string resolved_json;   // the JSON read, after --set and --patch (keys sorted): what provenance hashes
 };
 

@@ -9,6 +9,7 @@
 #include "scene/camera_reader.h"
 #include "scene/json_text.h"
 #include "scene/object_reader.h"
+#include "scene/overlay_reader.h"
 #include "scene/scene_overrides.h"
 
 namespace tumble {
@@ -248,6 +249,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   if (scene.output) checkSceneOutput(root, *scene.output);
   readBodies(root, ctx, scene);
   checkCameraBodies(scene, ctx);
+  readOverlays(root, ctx, scene);
   root.rejectUnknownKeys();
   scene.resolved_json = doc.dump();
   return scene;

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "dynamics/simulator.h"
+#include "state_hash.h"
 #include "scene/world_builder.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
@@ -25,24 +26,7 @@ using namespace tumble;
 
 namespace {
 
-// FNV-1a over the bytes of every double.
-struct TrajectoryHash {
-  std::uint64_t value = 1469598103934665603ull;
-  void add(double x) {
-    unsigned char bytes[sizeof x];
-    std::memcpy(bytes, &x, sizeof x);
-    for (unsigned char b : bytes) value = (value ^ b) * 1099511628211ull;
-  }
-  void add(const World& world) {
-    add(world.time);
-    for (const RigidBody& b : world.bodies) {
-      for (int i = 0; i < 3; ++i) add(b.x[i]);
-      add(b.q.w()), add(b.q.x()), add(b.q.y()), add(b.q.z());
-      for (int i = 0; i < 3; ++i) add(b.P[i]);
-      for (int i = 0; i < 3; ++i) add(b.L[i]);
-    }
-  }
-};
+using test::TrajectoryHash;
 
 struct GoldenRun {
   const char* scene;      // under scenes/

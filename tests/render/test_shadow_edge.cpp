@@ -10,6 +10,7 @@
 
 #include "box_frame.h"
 #include "box_mesh.h"
+#include "render_config.h"
 #include "render/camera_matrices.h"
 #include "render/renderer.h"
 
@@ -34,13 +35,9 @@ int greyAt(const RgbImage& img, int x, int y) {
 }  // namespace
 
 TEST_CASE("a shadow's edge on the ground passes through intermediate greys", "[render]") {
-  RenderConfig config;
-  config.width = kWidth;
-  config.height = kHeight;
   // test::boxFrame's shadow has slanted edges. With a 2048 map the texels are far smaller than
   // a pixel at this size, so whatever smooths the edge is the filter, not the map's coarseness.
-  config.shadow_map_size = 2048;
-  config.shader_dir = std::filesystem::path(TUMBLE_SOURCE_DIR) / "shaders";
+  const RenderConfig config = test::testConfig(kWidth, kHeight, 2048);
   auto renderer = Renderer::create(config);
   renderer->addMesh(test::boxMesh({0.5f, 0.5f, 0.5f}));
   const DrawFrame frame = test::boxFrame();

@@ -54,6 +54,7 @@ class AutoModel final : public ContactModelStep {
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
   double storedEnergy() const override { return chosen_ ? chosen_->storedEnergy() : 0; }
+  StepImpulses lastImpulses() const override { return chosen_ ? chosen_->lastImpulses() : StepImpulses{}; }
   ContactModel running(ContactModel) const override {
     return crowd_ ? ContactModel::TimeStepping : ContactModel::Baraff;
   }

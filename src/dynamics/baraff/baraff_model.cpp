@@ -5,12 +5,14 @@
 
 #include "dynamics/baraff/collisions.h"
 #include "dynamics/baraff/drift_correction.h"
+#include "dynamics/baraff/impact_log.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
 
 namespace tumble {
 
 void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  last_dt_ = settings.dt;
   const double start_time = world.time;
   const double done = tuning::kStepRemainder * settings.dt;
   double remaining = settings.dt;
@@ -32,10 +34,13 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   if (shared.has_contacts) {
     bool hit = false;
     const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
+    ImpactLogger impacts;   // overlays only: reads the state around the impulses, writes none
+    if (shared.impact_log) impacts.before(world, shared.contacts, settings.contact);
     shared.timed(Collide, [&] {
       hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, settings.dt,
                                counters.contacts);
     });
+    if (shared.impact_log && hit) impacts.after(world, *shared.impact_log);
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
   }
   shared.timed(Forces, [&] {

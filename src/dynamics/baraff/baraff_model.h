@@ -29,12 +29,15 @@ class BaraffModel final : public ContactModelStep {
  public:
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+  // The resting solve's impulses, over the step given (resting_forces.h: step_s).
+  StepImpulses lastImpulses() const override { return {&resting_memory_.last, last_dt_}; }
 
  private:
   // One sub-step of at most `remaining` seconds; returns its length.
   double substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining);
 
   RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
+  double last_dt_ = 0;             // s: the last step's length (refined steps are shorter)
   TunnellingBound tunnelling_;
   BackStepper back_step_;
   DriftCorrection correction_;

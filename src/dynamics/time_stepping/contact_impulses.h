@@ -37,6 +37,8 @@ class ContactImpulses {
   // `min_bounce_speed` get no restitution (contact_solve_common.h).
   void apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
              const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats);
+  // This step's impulses (N s on B, world), as the next step's warm start will find them.
+  const ImpulseMemory& memory() const { return memory_; }
 
  private:
   ImpulseMemory memory_;

@@ -7,6 +7,7 @@
 namespace tumble {
 
 void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  last_dt_ = settings.dt;
   ++shared.counters.substeps;
   const double dt = settings.dt;
   if (shared.has_contacts) {

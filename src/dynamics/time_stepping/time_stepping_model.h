@@ -21,9 +21,11 @@ class TimeSteppingModel final : public ContactModelStep {
  public:
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
+  StepImpulses lastImpulses() const override { return {&impulses_.memory(), last_dt_}; }
 
  private:
   ContactImpulses impulses_;
+  double last_dt_ = 0;             // s: the last step's length (refined steps are shorter)
   DriftProjection projection_;
   std::vector<double> reach_;      // how far each body can travel in the step
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse

@@ -1,4 +1,4 @@
-#include "bench/canvas.h"
+#include "plot/canvas.h"
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -10,7 +10,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace tumble::bench {
+namespace tumble::plot {
 namespace {
 
 cairo_status_t appendTo(void* closure, const unsigned char* data, unsigned int length) {
@@ -54,6 +54,27 @@ std::string renumberSurfaceIds(const std::string& svg) {
   return out + svg.substr(at);
 }
 
+// An image surface's pixels as cairo keeps them, native-endian 32-bit 0xAARRGGBB (RGB24 leaves the
+// top byte unused; ARGB32 premultiplies the colour), unpacked into R, G, B (and A, for 4 channels).
+void unpackPixels(cairo_surface_t* surface, int channels, int& width, int& height, std::vector<std::uint8_t>& out) {
+  cairo_surface_flush(surface);
+  width = cairo_image_surface_get_width(surface);
+  height = cairo_image_surface_get_height(surface);
+  out.resize(static_cast<std::size_t>(width) * height * channels);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  for (int y = 0; y < height; ++y) {
+    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    for (int x = 0; x < width; ++x) {
+      std::uint8_t* p = &out[(static_cast<std::size_t>(y) * width + x) * channels];
+      p[0] = static_cast<std::uint8_t>(row[x] >> 16);
+      p[1] = static_cast<std::uint8_t>(row[x] >> 8);
+      p[2] = static_cast<std::uint8_t>(row[x]);
+      if (channels == 4) p[3] = static_cast<std::uint8_t>(row[x] >> 24);
+    }
+  }
+}
+
 std::string num(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", x);
@@ -65,6 +86,8 @@ std::string num(double x) {
 Canvas::Canvas(Target target, int width, int height) : target_(target) {
   if (target == Target::Raster) {
     surface_ = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  } else if (target == Target::Layer) {
+    surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);   // zeroed: transparent
   } else {
     surface_ = cairo_svg_surface_create_for_stream(appendTo, &svg_, width, height);
     // Pixels, as the PNG: cairo's default unit, pt, would show the SVG a third larger.
@@ -81,6 +104,7 @@ Canvas::Canvas(Target target, int width, int height) : target_(target) {
   cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
   cairo_set_font_options(cr_, options);
   cairo_font_options_destroy(options);
+  if (target == Target::Layer) return;
   cairo_set_source_rgb(cr_, 1, 1, 1);
   cairo_paint(cr_);
 }
@@ -120,6 +144,12 @@ void Canvas::strokeRect(double x0, double y0, double x1, double y1, Rgb c, doubl
   setSource(c);
   cairo_set_line_width(cr_, width);
   cairo_stroke(cr_);
+}
+
+void Canvas::fillRect(double x0, double y0, double x1, double y1, Rgb c, double alpha) {
+  cairo_rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
+  cairo_set_source_rgba(cr_, c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, alpha);
+  cairo_fill(cr_);
 }
 
 void Canvas::marker(double x, double y, Marker m, double r, Rgb c) {
@@ -182,24 +212,16 @@ void Canvas::text(double x, double y, const std::string& s, Font f, Rgb c, Align
 }
 
 RgbImage Canvas::image() const {
-  if (target_ != Target::Raster) throw std::logic_error("Canvas::image on an SVG canvas");
-  cairo_surface_flush(surface_);
+  if (target_ != Target::Raster) throw std::logic_error("Canvas::image on a canvas that is not a raster");
   RgbImage img;
-  img.width = cairo_image_surface_get_width(surface_);
-  img.height = cairo_image_surface_get_height(surface_);
-  img.pixels.resize(static_cast<std::size_t>(img.width) * img.height * 3);
-  const unsigned char* data = cairo_image_surface_get_data(surface_);
-  const int stride = cairo_image_surface_get_stride(surface_);
-  // RGB24 keeps each pixel as a native-endian 32-bit 0x00RRGGBB.
-  for (int y = 0; y < img.height; ++y) {
-    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
-    for (int x = 0; x < img.width; ++x) {
-      std::uint8_t* p = &img.pixels[(static_cast<std::size_t>(y) * img.width + x) * 3];
-      p[0] = static_cast<std::uint8_t>(row[x] >> 16);
-      p[1] = static_cast<std::uint8_t>(row[x] >> 8);
-      p[2] = static_cast<std::uint8_t>(row[x]);
-    }
-  }
+  unpackPixels(surface_, 3, img.width, img.height, img.pixels);
+  return img;
+}
+
+RgbaImage Canvas::layer() const {
+  if (target_ != Target::Layer) throw std::logic_error("Canvas::layer on a canvas that is not a layer");
+  RgbaImage img;
+  unpackPixels(surface_, 4, img.width, img.height, img.pixels);
   return img;
 }
 
@@ -229,4 +251,4 @@ std::string Canvas::finishSvg(const std::string& title) {
   return doc;
 }
 
-}  // namespace tumble::bench
+}  // namespace tumble::plot
