@@ -63,6 +63,7 @@ struct Scratch {
   std::vector<double> offsets;
   std::vector<ClipVertex> poly, poly_next;         // Sutherland-Hodgman ping-pong
   std::vector<EdgeArc> arcs_a, arcs_b;             // edge query
+  std::vector<double> plane_a_dot_b, plane_b_dot_a;  // edge query: arc planes against face normals
 };
 Scratch& scratch();
 

@@ -2,6 +2,7 @@
 // edges, one from each object"; Xiang, "Robot Control and Physical Simulation", 2020: O(e1 e2) axes). Edge pairs are pruned on the Gauss map:
 // only pairs whose arcs cross form a face of the Minkowski difference A - B, and only those can
 // give the separating plane (Gregorius, GDC 2013/2015).
+#include <array>
 #include <cassert>
 
 #include "collision/narrow_internal.h"
@@ -73,20 +74,44 @@ bool edgeAxis(const HullView& a, int ea, const HullView& b, int eb, Eigen::Vecto
   return minkowskiEdgeAxis(a, ea, b, eb, axis, separation);
 }
 
-// The arcs are computed once per call; the O(E_a E_b) loop is then four dot products per pair,
-// and only pairs that pass the Gauss-map test pay for an axis.
+// The Gauss-map test of edge i of A against edge j of B takes the dot products of A's arc plane
+// (n1 x n0 of edge i) with B's two face normals at edge j, and of B's arc plane with A's two face
+// normals at edge i. Each is a dot of one edge's arc plane with one face normal of the other piece,
+// so they are computed once per (edge, face) — E_a F_b + F_a E_b dot products instead of 4 E_a E_b
+// (a box pair: 144 instead of 576) — with the same operands in the same order as arcsCross, so
+// every test comes out bit for bit as it did. The loop over pairs then only compares signs, and
+// only pairs that pass pay for an axis.
 AxisQuery queryEdges(const HullView& a, const HullView& b, double stop_above) {
   Scratch& s = scratch();
-  s.arcs_a.resize(a.edgeCount());
-  s.arcs_b.resize(b.edgeCount());
-  for (int i = 0; i < a.edgeCount(); ++i) s.arcs_a[i] = arcOf(a, i, 1.0);
-  for (int j = 0; j < b.edgeCount(); ++j) s.arcs_b[j] = arcOf(b, j, -1.0);
+  const int ea = a.edgeCount(), eb = b.edgeCount(), fa = a.faceCount(), fb = b.faceCount();
+  s.arcs_a.resize(ea);
+  s.arcs_b.resize(eb);
+  for (int i = 0; i < ea; ++i) s.arcs_a[i] = arcOf(a, i, 1.0);
+  for (int j = 0; j < eb; ++j) s.arcs_b[j] = arcOf(b, j, -1.0);
+  // B's Gauss map enters reversed: its normals negated, as arcOf(b, j, -1.0) has them.
+  s.plane_a_dot_b.resize(static_cast<std::size_t>(ea) * fb);   // [i][g]: (-n_b[g]) . (n1 x n0)_a[i]
+  s.plane_b_dot_a.resize(static_cast<std::size_t>(eb) * fa);   // [j][f]: n_a[f] . (n1 x n0)_b[j]
+  for (int g = 0; g < fb; ++g) {
+    const Eigen::Vector3d n = -1.0 * b.normals[g];
+    for (int i = 0; i < ea; ++i) s.plane_a_dot_b[static_cast<std::size_t>(i) * fb + g] = n.dot(s.arcs_a[i].n1xn0);
+  }
+  for (int j = 0; j < eb; ++j)
+    for (int f = 0; f < fa; ++f)
+      s.plane_b_dot_a[static_cast<std::size_t>(j) * fa + f] = a.normals[f].dot(s.arcs_b[j].n1xn0);
+  const std::array<int, 2>* faces_a = a.hull->edge_faces.data();
+  const std::array<int, 2>* faces_b = b.hull->edge_faces.data();
   AxisQuery best;
   Eigen::Vector3d axis;
   double sep = 0;
-  for (int i = 0; i < a.edgeCount(); ++i) {
-    for (int j = 0; j < b.edgeCount(); ++j) {
-      if (!arcsCross(s.arcs_a[i], s.arcs_b[j])) continue;
+  for (int i = 0; i < ea; ++i) {
+    const double* plane_a = &s.plane_a_dot_b[static_cast<std::size_t>(i) * fb];
+    const int f0 = faces_a[i][0], f1 = faces_a[i][1];
+    for (int j = 0; j < eb; ++j) {
+      // arcsCross with A's arc ab = edge i, B's arc cd = edge j
+      const double cba = plane_a[faces_b[j][0]], dba = plane_a[faces_b[j][1]];
+      const double* plane_b = &s.plane_b_dot_a[static_cast<std::size_t>(j) * fa];
+      const double adc = plane_b[f0], bdc = plane_b[f1];
+      if (!(cba * dba < 0 && adc * bdc < 0 && cba * bdc > 0)) continue;
       if (!minkowskiEdgeAxis(a, i, b, j, axis, sep) || sep <= best.separation) continue;
       best = {sep, i, j};
       if (sep > stop_above) return best;

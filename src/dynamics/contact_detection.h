@@ -87,11 +87,12 @@ class ContactDetector {
     CollisionHull hull;
     double thickness;   // m, the smallest extent along a face normal
   };
-  void updateBoxes(const World& world, double margin, const std::vector<double>* reach);
+  void updateBoxes(double margin, const std::vector<double>* reach);   // from poses_
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
                        std::vector<Contact>& out, std::vector<PiecePair>* pairs) const;
 
   std::vector<Piece> pieces_;
+  std::vector<Eigen::Isometry3d> poses_;         // per body, as of the current detect()
   std::vector<int> planes_;                      // body indices of ground planes
   SweepAndPrune broad_;
   std::vector<ProxyPair> candidates_;

@@ -32,16 +32,30 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
   }
   // Buffers kept between calls: a pile's rows take over 128 kB, which glibc would map and unmap
   // on every call (a page fault per page: a third of the time-stepping model's step, measured).
+  // Indexed by body, but only the island's own bodies are written and read: the time-stepping
+  // model solves a pile's islands one by one, and clearing arrays the size of the world for each
+  // (a pile of 1000 boxes has a hundred islands a step) cost more than many of the solves.
   thread_local std::vector<Eigen::Matrix3d> inv_inertia;
-  thread_local std::vector<char> used;
+  thread_local std::vector<char> used;   // all zero between calls
+  thread_local std::vector<int> island_bodies;
   thread_local std::vector<Row> data;
   thread_local std::vector<Eigen::Vector3d> lin, ang;
   const std::size_t bodies = world.bodies.size();
-  inv_inertia.assign(bodies, Eigen::Matrix3d::Zero());
-  used.assign(bodies, 0);
-  for (const ContactRow& r : rows) used[r.a] = used[r.b] = 1;
-  for (std::size_t k = 0; k < bodies; ++k)
-    if (used[k]) inv_inertia[k] = inverseInertiaWorld(world.bodies[k]);
+  inv_inertia.resize(bodies);
+  used.resize(bodies, 0);
+  lin.resize(bodies);
+  ang.resize(bodies);
+  island_bodies.clear();
+  for (const ContactRow& r : rows)
+    for (int k : {r.a, r.b})
+      if (!used[k]) used[k] = 1, island_bodies.push_back(k);
+  for (int k : island_bodies) {
+    inv_inertia[k] = inverseInertiaWorld(world.bodies[k]);
+    used[k] = 0;
+    // Acceleration of each body from the forces so far: linear and angular parts.
+    lin[k].setZero();
+    ang[k].setZero();
+  }
 
   data.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -59,9 +73,6 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     double diag = d.inv_mass_a + d.inv_mass_b + d.arm_a.dot(d.ang_a) + d.arm_b.dot(d.ang_b);
     d.inv_diag = diag > 0 ? 1 / diag : 0;   // a row between two static bodies takes no force
   }
-  // Acceleration of each body from the forces so far: linear and angular parts.
-  lin.assign(bodies, Eigen::Vector3d::Zero());
-  ang.assign(bodies, Eigen::Vector3d::Zero());
   auto push = [&](const Row& d, double df) {
     lin[d.a] -= (df * d.inv_mass_a) * d.dir;
     lin[d.b] += (df * d.inv_mass_b) * d.dir;
