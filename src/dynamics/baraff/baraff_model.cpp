@@ -7,8 +7,17 @@
 #include "dynamics/baraff/drift_correction.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
+#include "dynamics/joints/joint_projection.h"
+#include "dynamics/joints/joint_summary.h"
 
 namespace tumble {
+
+void BaraffModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
+  if (!world.joints.empty())
+    joints_line_ = "joints      " + describeJoints(world) +
+                   ": constraint forces with the applied ones at every integrator stage, their impulse "
+                   "after each impact, drift projected (positions, then velocities)";
+}
 
 void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
   const double start_time = world.time;
@@ -37,6 +46,9 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
                                counters.contacts);
     });
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
+    // An impulse on a joined body (a struck pendulum) pulls its joint apart at the velocity level;
+    // the joints' reaction impulse follows at once, so the joint holds through the impact.
+    if (hit && !world.joints.empty()) removeJointVelocityError(world);
   }
   shared.timed(Forces, [&] {
     if (shared.apply_gravity) applyGravity(world, shared.wrenches);
@@ -63,7 +75,10 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
       lifting_[i] = normalVelocity(world, shared.contacts[i]) > settings.contact.resting_speed_m_s;
   }
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub); });
-  if (!shared.has_contacts) return h;
+  if (!shared.has_contacts) {
+    correctJoints(world, shared);
+    return h;
+  }
 
   shared.timed(Detect, [&] { shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_); });
   double taken = h;
@@ -98,7 +113,19 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     if (n.moved == 0) break;
     shared.contacts_fresh = false;
   }
+  correctJoints(world, shared);
   return taken;
+}
+
+// The joints' drift correction at the end of a sub-step (joints/joint_projection.h): positions by
+// a mass-weighted projection, then the velocity error along the rows by an impulse that only
+// removes energy. A move leaves the contacts in hand stale.
+void BaraffModel::correctJoints(World& world, SharedStages& shared) {
+  if (world.joints.empty()) return;
+  shared.timed(Correct, [&] {
+    if (projectJointPositions(world).passes > 0) shared.contacts_fresh = false;
+    removeJointVelocityError(world);
+  });
 }
 
 std::vector<std::string> BaraffModel::describe(const StepSettings& settings, const SharedStages& shared) const {
@@ -110,6 +137,7 @@ std::vector<std::string> BaraffModel::describe(const StepSettings& settings, con
   if (shared.apply_gravity) lines.push_back("forces      gravity on " + shared.movingBodies());
   if (shared.has_contacts) lines.push_back("resting     contact forces: LCP a = A f + b (Dantzig pivoting) + Coulomb friction");
   lines.push_back(shared.integrateLine(settings));
+  if (!joints_line_.empty()) lines.push_back(joints_line_);
   if (shared.has_contacts) {
     lines.push_back("back-step   bisection to the first contact when a step ends too deep");
     lines.push_back("correct     position projection of residual penetration");

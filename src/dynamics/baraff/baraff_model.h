@@ -12,6 +12,9 @@
 //   back-step   bisection to the first contact if it ends too deep back_step.h
 //   correct     project out residual penetration, in passes on the    drift_correction.h
 //               contacts of the end state, while a pass moves something
+//   joints      (a world with joints) their forces are evaluated at    joints/joint_forces.h
+//               every integrator stage, their impulse follows each     joints/joint_projection.h
+//               impact, and their drift is projected out
 #pragma once
 
 #include <vector>
@@ -27,12 +30,14 @@ namespace tumble {
 
 class BaraffModel final : public ContactModelStep {
  public:
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
 
  private:
   // One sub-step of at most `remaining` seconds; returns its length.
   double substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining);
+  void correctJoints(World& world, SharedStages& shared);
 
   RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
   TunnellingBound tunnelling_;
@@ -42,6 +47,7 @@ class BaraffModel final : public ContactModelStep {
   std::vector<Contact> contacts_end_;
   std::vector<PiecePair> pairs_end_;
   std::vector<char> lifting_;      // per contact at the start: separating as the sub-step starts
+  std::string joints_line_;        // for `tumble check`; empty without joints
 };
 
 }  // namespace tumble

@@ -5,8 +5,10 @@
 //   correct     project out residual penetration                          drift_projection.h
 //   forces      gravity as an impulse                                     gravity.h
 //   resting     the contact impulses (restitution, friction pyramid)      contact_impulses.h
+//   joints      (a world with joints) their impulses                      joints/joint_impulses.h
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
+//   joints      their position drift projected out                         joints/joint_projection.h
 #pragma once
 
 #include <vector>
@@ -19,6 +21,7 @@ namespace tumble {
 
 class TimeSteppingModel final : public ContactModelStep {
  public:
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
 
@@ -27,6 +30,7 @@ class TimeSteppingModel final : public ContactModelStep {
   DriftProjection projection_;
   std::vector<double> reach_;      // how far each body can travel in the step
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
+  std::string joints_line_;        // for `tumble check`; empty without joints
 };
 
 }  // namespace tumble

@@ -1,0 +1,22 @@
+// The joints' constraint forces at the acceleration level (Baraff, "Linear-time dynamics using
+// Lagrange multipliers", 1996): with the applied wrenches W, the multipliers f solve
+//   J M^-1 (W + J^T f) + J' v = 0
+// (for a limit row: >= 0 with f >= 0; a velocity motor's row asks for the acceleration that
+// reaches its target speed within the step, |f| at most its torque). J' v holds the centripetal
+// terms and each body's gyroscopic acceleration -I^-1 (w x L), so the forces hold the joints to
+// second order, and the integrator evaluates them at each of its stages (joint_integrator.h).
+#pragma once
+
+#include <vector>
+
+#include "dynamics/integrator.h"
+#include "dynamics/world.h"
+
+namespace tumble {
+
+// Adds the PD motors' torques and the joints' constraint forces for the world's present state to
+// `wrenches` (one per body, holding the applied forces). `dt`: the step a velocity motor's target
+// is to be reached within.
+void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt);
+
+}  // namespace tumble

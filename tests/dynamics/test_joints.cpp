@@ -1,0 +1,225 @@
+// Joints against closed forms: a compound pendulum's period, a double pendulum's energy, a chain's
+// gaps, a PD-driven hinge's step response, hinge limits, an impact on a pendulum, and bit-identical
+// reruns. Each tolerance says where it comes from. TUMBLE_PRINT_JOINT_FIGURES=1 prints the figures.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "base/error.h"
+#include "dynamics/joints/joint.h"
+#include "joint_worlds.h"
+
+using namespace tumble;
+using namespace tumble::joint_test;
+
+namespace {
+
+const double kG = 9.81;
+
+void figure(const char* what, ContactModel model, double value) {
+  if (std::getenv("TUMBLE_PRINT_JOINT_FIGURES"))
+    std::printf("%-40s %-14s %.6g\n", what, model == ContactModel::Baraff ? "baraff" : "time_stepping", value);
+}
+
+// Times at which f(t) crosses zero upwards, by linear interpolation between steps (near a zero
+// crossing a sine is straight to third order: the interpolation's error is far below the step).
+struct UpCrossings {
+  double last_t = 0, last_f = 0;
+  bool started = false;
+  std::vector<double> times;
+  void add(double t, double f) {
+    if (started && last_f < 0 && f >= 0) times.push_back(last_t + (t - last_t) * (-last_f) / (f - last_f));
+    last_t = t;
+    last_f = f;
+    started = true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a compound pendulum's period for a 2 deg swing is 2 pi sqrt(I / (m g d)) within 0.5 %", "[joints]") {
+  const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
+  const double L = 1, w = 0.02, m = 1, theta0 = 2 * M_PI / 180;
+  const Eigen::Vector3d anchor(0, 0, 2);
+  JointRun run = makeRun({rod("rod", anchor, theta0, L, w, m)}, {joint(JointType::Hinge, "world", "rod", anchor)}, model);
+  UpCrossings crossings;
+  simulate(run, 8.5, [&](const World& world) { crossings.add(world.time, world.bodies[0].x.x()); });
+  REQUIRE(crossings.times.size() >= 4);
+  const double measured = (crossings.times.back() - crossings.times.front()) / double(crossings.times.size() - 1);
+  // I about the hinge: the box's m (w^2 + L^2) / 12 about its centre, plus m d^2 with d = L / 2.
+  // The amplitude's own lengthening, 1 + theta0^2 / 16 (7.6e-5 at 2 deg), is included so the
+  // comparison measures the simulation, not the small-angle formula.
+  const double I = m * (w * w + L * L) / 12 + m * (L / 2) * (L / 2);
+  const double expected = 2 * M_PI * std::sqrt(I / (m * kG * L / 2)) * (1 + theta0 * theta0 / 16);
+  const double error = std::abs(measured - expected) / expected;
+  figure("pendulum period relative error", model, error);
+  CHECK(error < 5e-3);
+}
+
+TEST_CASE("a double pendulum's total energy drifts below 1e-4 over 10 s (Baraff model, RK4, dt 1/240)", "[joints]") {
+  const Eigen::Vector3d anchor(0, 0, 2);
+  const double start = M_PI / 2;   // both rods straight out sideways: a chaotic swing
+  const Eigen::Vector3d elbow = rodEnd(anchor, start);
+  JointRun run = makeRun({rod("upper", anchor, start), rod("lower", elbow, start)},
+                         {joint(JointType::Hinge, "world", "upper", anchor), joint(JointType::Hinge, "upper", "lower", elbow)},
+                         ContactModel::Baraff);
+  const double e0 = totalEnergy(run.built.world);
+  // Relative to the energy the swing has to spend: what the rods release falling from straight out
+  // to hanging straight down (m g 0.5 + m g 1.5).
+  const double scale = kG * (0.5 + 1.5);
+  double drift = 0, fastest = 0;
+  simulate(run, 10, [&](const World& world) {
+    drift = std::max(drift, std::abs(totalEnergy(world) - e0) / scale);
+    fastest = std::max(fastest, world.bodies[1].angularVelocity().norm());
+  });
+  figure("double pendulum energy drift (10 s)", ContactModel::Baraff, drift);
+  CHECK(fastest > 5);   // it did swing hard
+  CHECK(drift < 1e-4);
+}
+
+TEST_CASE("a 10-link chain keeps each joint's gap below 1e-6 m", "[joints]") {
+  const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
+  std::vector<BodySpec> links;
+  std::vector<JointSpec> joints;
+  Eigen::Vector3d at(0, 0, 2);
+  std::string previous = "world";
+  for (int i = 0; i < 10; ++i) {
+    const std::string name = "link" + std::to_string(i);
+    links.push_back(rod(name, at, M_PI / 2, 0.15, 0.02, 0.2));
+    joints.push_back(joint(JointType::Ball, previous, name, at));
+    at = rodEnd(at, M_PI / 2, 0.15);
+    previous = name;
+  }
+  JointRun run = makeRun(links, joints, model);
+  double gap = 0, fastest = 0;
+  simulate(run, 5, [&](const World& world) {
+    for (const Joint& j : world.joints) gap = std::max(gap, anchorGap(world, j));
+    fastest = std::max(fastest, world.bodies.back().velocity().norm());
+  });
+  figure("chain largest joint gap (m)", model, gap);
+  CHECK(fastest > 3);
+  CHECK(gap < 1e-6);
+}
+
+TEST_CASE("a PD-driven hinge's step response has the second-order overshoot and settling time within 2 %", "[joints]") {
+  const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
+  // A plate turning about its own centre of mass (z), no gravity: I theta'' = kp (target - theta) -
+  // kd theta', a damped oscillator with wn = sqrt(kp / I), zeta = kd / (2 sqrt(kp I)).
+  BodySpec plate;
+  plate.name = "plate";
+  plate.box_size_m = {0.4, 0.4, 0.05};
+  plate.mass_kg = 1;
+  const double I = (0.4 * 0.4 + 0.4 * 0.4) / 12, kp = 1, zeta = 0.25, target = 30 * M_PI / 180;
+  const double wn = std::sqrt(kp / I), kd = 2 * zeta * std::sqrt(kp * I), wd = wn * std::sqrt(1 - zeta * zeta);
+  JointSpec hinge = joint(JointType::Hinge, "world", "plate", Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ());
+  hinge.motor.kind = JointMotor::Kind::Position;
+  hinge.motor.target_rad = target;
+  hinge.motor.kp = kp;
+  hinge.motor.kd = kd;
+  JointRun run = makeRun({plate}, {hinge}, model, 1.0 / 240, Eigen::Vector3d::Zero());
+  // The closed form from rest at 0: theta = target (1 - e^(-zeta wn t) (cos wd t + zeta wn / wd sin wd t)).
+  auto exact = [&](double t) {
+    return target * (1 - std::exp(-zeta * wn * t) * (std::cos(wd * t) + zeta * wn / wd * std::sin(wd * t)));
+  };
+  const double band = 0.02 * target;   // the 2 % settling band
+  double peak = 0, settled = 0, exact_settled = 0;
+  simulate(run, 6, [&](const World& world) {
+    const double theta = hingeAngle(world, world.joints[0]);
+    peak = std::max(peak, theta);
+    if (std::abs(theta - target) > band) settled = world.time;
+    if (std::abs(exact(world.time) - target) > band) exact_settled = world.time;
+  });
+  const double overshoot = (peak - target) / target;
+  const double exact_overshoot = std::exp(-zeta * M_PI / std::sqrt(1 - zeta * zeta));   // Mp
+  const double overshoot_error = std::abs(overshoot - exact_overshoot) / exact_overshoot;
+  const double settling_error = std::abs(settled - exact_settled) / exact_settled;
+  figure("PD overshoot relative error", model, overshoot_error);
+  figure("PD settling time relative error", model, settling_error);
+  // The k-th extreme of the closed form is off the target by Mp^k: none may be a near miss of the
+  // band, or a rounding could move the settling time by half a period (zeta 0.25: Mp^4 = 0.039
+  // settles on a steep flank, Mp^5 = 0.017 stays 13 % inside the band).
+  for (int k = 1; k < 20; ++k) REQUIRE(std::abs(std::pow(exact_overshoot, k) - 0.02) > 0.1 * 0.02);
+  CHECK(overshoot_error < 0.02);
+  CHECK(settling_error < 0.02);
+}
+
+TEST_CASE("a hinge stays within its limits, and gains no energy stopping there", "[joints]") {
+  const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
+  const Eigen::Vector3d anchor(0, 0, 2);
+  BodySpec r = rod("rod", anchor, 0);
+  r.angular_velocity_rad_s = {0, 4, 0};   // would swing to about 50 deg
+  r.velocity_m_s = Eigen::Vector3d(0, 4, 0).cross(Eigen::Vector3d(0, 0, -0.5));
+  JointSpec hinge = joint(JointType::Hinge, "world", "rod", anchor);
+  hinge.limits_deg = Eigen::Vector2d(-20, 20);
+  JointRun run = makeRun({r}, {hinge}, model);
+  const double e0 = totalEnergy(run.built.world), limit = 20 * M_PI / 180;
+  double widest = 0, highest = e0, gap = 0;
+  simulate(run, 3, [&](const World& world) {
+    widest = std::max(widest, std::abs(hingeAngle(world, world.joints[0])));
+    highest = std::max(highest, totalEnergy(world));
+    gap = std::max(gap, anchorGap(world, world.joints[0]));
+  });
+  CHECK(widest > limit - 1e-3);          // it reached the limit
+  CHECK(widest < limit + 1e-9);          // and the projection held it there (1e-12 rad per pass)
+  // Stopping at a limit only takes energy. The Baraff model conserves it to rounding on the way;
+  // time stepping's gravity impulse at the start of each step (symplectic Euler in the momenta)
+  // makes the energy swing by about m g v dt, 1e-3 of it here: the fault check's own allowance.
+  CHECK(highest <= e0 * (1 + (model == ContactModel::Baraff ? 1e-9 : 1e-3)));
+  CHECK(gap < 1e-6);
+}
+
+TEST_CASE("a struck pendulum keeps its joint through the impact (Baraff model)", "[joints]") {
+  const Eigen::Vector3d anchor(0, 0, 2);
+  BodySpec ball;
+  ball.name = "ball";
+  ball.shape = ShapeKind::Sphere;
+  ball.radius_m = 0.05;
+  ball.mass_kg = 0.5;
+  ball.restitution = 0.8;
+  ball.position_m = {-0.3, 0, 1.2};
+  ball.velocity_m_s = {3, 0, 0};
+  BodySpec r = rod("rod", anchor, 0, 1, 0.04);
+  r.restitution = 0.8;
+  JointRun run = makeRun({r, ball}, {joint(JointType::Hinge, "world", "rod", anchor)}, ContactModel::Baraff, 1.0 / 240,
+                         Eigen::Vector3d::Zero());
+  const double e0 = totalEnergy(run.built.world);
+  double gap = 0, highest = e0;
+  simulate(run, 0.5, [&](const World& world) {
+    gap = std::max(gap, anchorGap(world, world.joints[0]));
+    highest = std::max(highest, totalEnergy(world));
+  });
+  const World& world = run.built.world;
+  CHECK(world.bodies[0].angularVelocity().y() < -0.5);   // struck below the hinge towards +x: it swings
+  CHECK(gap < 1e-6);
+  CHECK(highest <= e0 * (1 + 1e-9));
+}
+
+TEST_CASE("a run with joints is bit-identical when repeated", "[joints]") {
+  auto once = [] {
+    const Eigen::Vector3d anchor(0, 0, 2), elbow = rodEnd(anchor, 1.0);
+    JointRun run = makeRun({rod("upper", anchor, 1.0), rod("lower", elbow, 1.0)},
+                           {joint(JointType::Hinge, "world", "upper", anchor), joint(JointType::Ball, "upper", "lower", elbow)},
+                           ContactModel::Baraff);
+    simulate(run, 1, [](const World&) {});
+    return run.built.world.bodies[1];
+  };
+  const RigidBody a = once(), b = once();
+  CHECK(a.x == b.x);
+  CHECK(a.q.coeffs() == b.q.coeffs());
+  CHECK(a.P == b.P);
+  CHECK(a.L == b.L);
+}
+
+TEST_CASE("the penalty model refuses a world with joints", "[joints]") {
+  const Eigen::Vector3d anchor(0, 0, 2);
+  JointRun run = makeRun({rod("rod", anchor, 0.1)}, {joint(JointType::Hinge, "world", "rod", anchor)}, ContactModel::Penalty);
+  try {
+    Pipeline pipeline(run.built.world, run.step);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::BadInput);
+    CHECK(std::string(e.what()).find("joints") != std::string::npos);
+  }
+}
