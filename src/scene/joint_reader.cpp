@@ -88,7 +88,12 @@ JointSpec readJoint(ObjectReader& in, const ParseContext& ctx, const Scene& scen
   const std::string type = readChoice(in, "type", "ball", {"ball", "hinge", "fixed"});
   joint.type = type == "hinge" ? JointType::Hinge : type == "fixed" ? JointType::Fixed : JointType::Ball;
   readBodies(in, ctx, scene, joint);
-  if (!in.has("anchor_m")) in.fail("", "a joint needs \"anchor_m\": the world point [x, y, z] where it joins the bodies");
+  if (!in.has("anchor_m")) {
+    // "anchr_m" is better answered with "did you mean": every key a joint may have is asked first.
+    for (const char* key : {"axis", "limits_deg", "motor"}) in.has(key);
+    in.rejectUnknownKeys();
+    in.fail("", "a joint needs \"anchor_m\": the world point [x, y, z] where it joins the bodies");
+  }
   joint.anchor_m = in.vector3("anchor_m", joint.anchor_m);
   const bool hinge = joint.type == JointType::Hinge;
   for (const char* key : {"axis", "limits_deg", "motor"})
