@@ -7,6 +7,9 @@
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/island_impulses.h"
+#include "dynamics/joints/contact_joint_lcp.h"
+#include "dynamics/joints/joint_forces.h"
+#include "dynamics/joints/pd_motor.h"
 #include "dynamics/row_gauss_seidel.h"
 
 namespace tumble {
@@ -306,8 +309,26 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     coupling = delassus(world, all).block(0, n, n, m);
   }
   slide.g = Eigen::VectorXd::Zero(m);   // dynamic friction magnitudes
+  // A world with joints: a resting body may hang from one (a chain lying on the ground), so the
+  // joints' rows join the island's problem and its contact forces are those the joints allow
+  // (joints/contact_joint_lcp.h). The joint forces found with them are dropped: the integrator
+  // evaluates the joints again at each of its stages, with these contact forces held.
+  std::vector<JointRow> joint_rows;
+  Eigen::VectorXd joint_b;
+  if (!world.joints.empty()) {
+    std::vector<Wrench> applied = ctx.wrenches;
+    addMotorTorques(world, applied);
+    jointAccelerationRows(world, applied, ctx.step_s, false, joint_rows, joint_b);
+  }
+  auto solve = [&](const lcp::LcpProblem& p) {
+    if (joint_rows.empty()) return solveContactLcp(p, ctx.stats);
+    lcp::LcpResult joined = solveContactLcp(withJointRows(world, p, lcp.rows, joint_rows, joint_b), ctx.stats);
+    joined.f.conservativeResize(p.size());
+    joined.w.conservativeResize(p.size());
+    return joined;
+  };
   lcp.problem.b = b;
-  lcp::LcpResult r = solveContactLcp(lcp.problem, ctx.stats);
+  lcp::LcpResult r = solve(lcp.problem);
   if (!usableLcpAnswer(r, lcp.problem)) {
     solveStoppedShort(ctx, resting);
     return;
@@ -330,7 +351,7 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     slide.g = next;
     if (change <= tuning::kDynamicFrictionSettled * (1 + slide.g.cwiseAbs().maxCoeff())) break;
     lcp.problem.b = b + coupling * slide.g;
-    r = solveContactLcp(lcp.problem, ctx.stats);
+    r = solve(lcp.problem);
     if (!usableLcpAnswer(r, lcp.problem)) {
       solveStoppedShort(ctx, resting);
       return;

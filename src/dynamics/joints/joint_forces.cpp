@@ -12,16 +12,14 @@ namespace {
 constexpr double kLeavingRate = 1e-9;
 }  // namespace
 
-void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt) {
-  addMotorTorques(world, wrenches);
-  thread_local std::vector<JointRow> rows;
+void jointAccelerationRows(const World& world, const std::vector<Wrench>& applied, double dt, bool motors,
+                           std::vector<JointRow>& rows, Eigen::VectorXd& b) {
   RowChoice choice;
-  choice.motors = true;
+  choice.motors = motors;
   buildJointRows(world, choice, rows);
   std::erase_if(rows, [&](const JointRow& r) {
     return r.kind == JointRow::Kind::Limit && jointRowVelocity(world, r) > kLeavingRate;
   });
-  if (rows.empty()) return;
   // Each body's acceleration under the applied wrenches alone: F / m, and I^-1 (tau - w x L)
   // (d/dt of w = I^-1 L in world axes, with I turning with the body).
   const std::size_t bodies = world.bodies.size();
@@ -31,11 +29,11 @@ void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt
   for (std::size_t i = 0; i < bodies; ++i) {
     const RigidBody& body = world.bodies[i];
     if (body.is_static) continue;
-    lin[i] = body.inv_mass * wrenches[i].force;
-    ang[i] = inverseInertiaWorld(body) * (wrenches[i].torque - body.angularVelocity().cross(body.L));
+    lin[i] = body.inv_mass * applied[i].force;
+    ang[i] = inverseInertiaWorld(body) * (applied[i].torque - body.angularVelocity().cross(body.L));
   }
   const int n = static_cast<int>(rows.size());
-  Eigen::VectorXd b(n);
+  b.resize(n);
   for (int i = 0; i < n; ++i) {
     const JointRow& r = rows[i];
     double acc = r.bias;
@@ -44,8 +42,16 @@ void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt
     if (r.kind == JointRow::Kind::Motor) acc -= (r.target_velocity - jointRowVelocity(world, r)) / dt;
     b[i] = acc;
   }
+}
+
+void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt) {
+  addMotorTorques(world, wrenches);
+  thread_local std::vector<JointRow> rows;
+  thread_local Eigen::VectorXd b;
+  jointAccelerationRows(world, wrenches, dt, true, rows, b);
+  if (rows.empty()) return;
   const Eigen::VectorXd f = solveJointRows(rows, jointDelassus(world, rows), b);
-  for (int i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
     const JointRow& r = rows[i];
     if (r.a >= 0 && !world.bodies[r.a].is_static) {
       wrenches[r.a].force += f[i] * r.lin_a;

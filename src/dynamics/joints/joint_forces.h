@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/integrator.h"
+#include "dynamics/joints/joint_rows.h"
 #include "dynamics/world.h"
 
 namespace tumble {
@@ -18,5 +19,11 @@ namespace tumble {
 // `wrenches` (one per body, holding the applied forces). `dt`: the step a velocity motor's target
 // is to be reached within.
 void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt);
+
+// The rows of that problem and their b (J a + J' v under `applied`, less a velocity motor's
+// target acceleration), for a solve that takes them with other rows (the Baraff model's resting
+// contacts, contact_joint_lcp.h). `motors`: whether velocity motors' rows are among them.
+void jointAccelerationRows(const World& world, const std::vector<Wrench>& applied, double dt, bool motors,
+                           std::vector<JointRow>& rows, Eigen::VectorXd& b);
 
 }  // namespace tumble

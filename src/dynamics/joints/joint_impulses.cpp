@@ -8,8 +8,7 @@
 
 namespace tumble {
 
-void applyJointStepImpulses(World& world, double dt) {
-  std::vector<JointRow> rows;
+void jointStepRows(const World& world, double dt, std::vector<JointRow>& rows, Eigen::VectorXd& b) {
   RowChoice choice;
   choice.motors = true;
   choice.motor_torque_scale = dt;
@@ -18,14 +17,20 @@ void applyJointStepImpulses(World& world, double dt) {
   choice.limit_slop = 2 * std::numbers::pi;
   buildJointRows(world, choice, rows);
   const int n = static_cast<int>(rows.size());
-  if (n == 0) return;
-  Eigen::VectorXd b(n);
+  b.resize(n);
   for (int i = 0; i < n; ++i) {
     const JointRow& r = rows[i];
     b[i] = jointRowVelocity(world, r);
     if (r.kind == JointRow::Kind::Limit) b[i] += std::max(r.error, 0.0) / dt;
     if (r.kind == JointRow::Kind::Motor) b[i] -= r.target_velocity;
   }
+}
+
+void applyJointStepImpulses(World& world, double dt) {
+  std::vector<JointRow> rows;
+  Eigen::VectorXd b;
+  jointStepRows(world, dt, rows, b);
+  if (rows.empty()) return;
   applyJointImpulses(world, rows, solveJointRows(rows, jointDelassus(world, rows), b));
 }
 

@@ -7,10 +7,18 @@
 // solved exactly by pivoting (joint_rows.h).
 #pragma once
 
+#include <vector>
+
+#include "dynamics/joints/joint_rows.h"
 #include "dynamics/world.h"
 
 namespace tumble {
 
+// The rows of the step's joint problem and their b (w = A p + b, b = J v less each row's target).
+void jointStepRows(const World& world, double dt, std::vector<JointRow>& rows, Eigen::VectorXd& b);
+
+// Solves and applies the joints' impulses alone (a world with nothing that can touch; with
+// contacts they are solved together, contact_joint_lcp.h).
 void applyJointStepImpulses(World& world, double dt);
 
 }  // namespace tumble

@@ -39,8 +39,43 @@ void displace(World& world, const std::vector<JointRow>& rows, const Eigen::Vect
 
 }  // namespace
 
+namespace {
+
+// Gravitational potential energy of the moving bodies (J, zero at the origin).
+double potentialEnergy(const World& world) {
+  double e = 0;
+  for (const RigidBody& body : world.bodies)
+    if (!body.is_static) e -= body.mass * world.gravity.dot(body.x);
+  return e;
+}
+
+// A projection that lifts bodies (a joint pulled apart by a contact's correction, put back higher)
+// pays for the lift from the joined bodies' kinetic energy: their momenta scaled down by one
+// factor, as the contacts' correction pays for its lifts (baraff/drift_correction.h). A projection
+// never adds energy.
+void payForLift(World& world, double lift) {
+  if (!(lift > 0)) return;
+  double kinetic = 0;
+  std::vector<char> joined(world.bodies.size(), 0);
+  for (const Joint& j : world.joints)
+    for (int k : {j.a, j.b})
+      if (k >= 0 && !world.bodies[k].is_static && !joined[k]) {
+        joined[k] = 1;
+        kinetic += world.bodies[k].kineticEnergy();
+      }
+  const double scale = kinetic > lift ? std::sqrt((kinetic - lift) / kinetic) : 0.0;
+  for (std::size_t k = 0; k < world.bodies.size(); ++k)
+    if (joined[k]) {
+      world.bodies[k].P *= scale;
+      world.bodies[k].L *= scale;
+    }
+}
+
+}  // namespace
+
 JointProjection projectJointPositions(World& world, double tolerance, int max_passes) {
   JointProjection out;
+  const double start_potential = potentialEnergy(world);
   std::vector<JointRow> rows;
   RowChoice choice;
   choice.limit_slop = 0;   // only hinges past a limit
@@ -58,6 +93,7 @@ JointProjection projectJointPositions(World& world, double tolerance, int max_pa
     // J M^-1 J^T d + C = 0 on equality rows; on limit rows C + (J M^-1 J^T d) >= 0 with d >= 0.
     displace(world, rows, solveJointRows(rows, jointDelassus(world, rows), c));
   }
+  if (out.passes > 0) payForLift(world, potentialEnergy(world) - start_potential);
   return out;
 }
 

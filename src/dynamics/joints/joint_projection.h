@@ -5,7 +5,8 @@
 // positions only, by the smallest mass-weighted displacement (dq = M^-1 J^T d with
 // J M^-1 J^T d = -C, repeated while the rows are nonlinear), and the velocity error along the
 // rows by an impulse (J M^-1 J^T p = -J v): an M-orthogonal projection of the velocities, which
-// can only remove kinetic energy.
+// can only remove kinetic energy. A position projection that lifts the bodies (a joint a contact's
+// correction pulled apart, put back higher) pays for the lift from their kinetic energy.
 #pragma once
 
 #include "dynamics/world.h"

@@ -39,8 +39,9 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
       impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
     });
   }
-  // The joints' impulses on the velocities the contacts left (joints/joint_impulses.h).
-  if (!world.joints.empty()) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });
+  // The joints' impulses: with the contacts', in one problem (contact_impulses.h); alone where
+  // nothing can touch (joints/joint_impulses.h).
+  if (!world.joints.empty() && !shared.has_contacts) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });
   for (Wrench& w : shared.wrenches) w = Wrench{};
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
   // Free motion with joints still follows them (their forces at every integrator stage hold the
@@ -54,9 +55,9 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
 void TimeSteppingModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
   if (!world.joints.empty())
     joints_line_ = "joints      " + describeJoints(world) +
-                   ": velocity-level impulses after the contacts' (equality rows, limits that may close "
-                   "within the step, velocity motors bounded by torque x dt), forces at every integrator "
-                   "stage, position drift projected";
+                   ": velocity-level impulses in one pivoted problem with the contacts' (equality rows, limits "
+                   "that may close within the step, velocity motors bounded by torque x dt), forces at every "
+                   "integrator stage, position drift projected";
 }
 
 std::vector<std::string> TimeSteppingModel::describe(const StepSettings& settings, const SharedStages& shared) const {

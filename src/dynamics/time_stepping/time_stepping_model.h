@@ -4,8 +4,8 @@
 //   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
 //   correct     project out residual penetration                          drift_projection.h
 //   forces      gravity as an impulse                                     gravity.h
-//   resting     the contact impulses (restitution, friction pyramid)      contact_impulses.h
-//   joints      (a world with joints) their impulses                      joints/joint_impulses.h
+//   resting     the contact impulses (restitution, friction pyramid),     contact_impulses.h
+//               with a world's joints in the same problem                 joints/contact_joint_lcp.h
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
 //   joints      their position drift projected out                         joints/joint_projection.h

@@ -1,0 +1,32 @@
+// Contacts and joints in one impulse problem. A joint's reaction and a contact's push act on the
+// same bodies: solved one after the other, each undoes part of the other (a chain lying on the
+// ground pressed into it by its joints' impulses, then lifted out by the contacts'). Here the
+// contact rows (normal rows f >= 0, friction rows bounded by mu times their normal, ODE's findex)
+// and the joint rows (bilateral, limits f >= 0, motors boxed) make one LCP with
+// A = J M^-1 J^T over both, solved by pivoting: exact, where Gauss-Seidel would pass a change
+// along a chain about one link per sweep.
+#pragma once
+
+#include <vector>
+
+#include "dynamics/contact_rows.h"
+#include "dynamics/joints/joint_rows.h"
+
+namespace tumble {
+
+// A contact row as a generic row: a force f along it pushes B by +f dir at rb, A by -f dir at ra.
+JointRow asGenericRow(const ContactRow& row);
+
+// The contact problem (its rows first, b filled) with the joint rows and their b appended: A over
+// both, the joints' own bounds.
+lcp::LcpProblem withJointRows(const World& world, const lcp::LcpProblem& contacts,
+                              const std::vector<ContactRow>& contact_rows, const std::vector<JointRow>& joints,
+                              const Eigen::VectorXd& joint_b);
+
+// Solves the contact LCP `contacts` (its b filled) together with the joint rows and their b;
+// applies the joints' impulses to the world and returns the contact rows' impulses, which the
+// caller applies and records.
+Eigen::VectorXd solveContactsWithJoints(World& world, const ContactLcp& contacts, const std::vector<JointRow>& joints,
+                                        const Eigen::VectorXd& joint_b, ContactSolveStats& stats);
+
+}  // namespace tumble
