@@ -119,8 +119,9 @@ long integrateBodies(World& world, const std::vector<Wrench>& wrenches, const St
   return count;
 }
 
-long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
-  if (!world.joints.empty()) return integrateJoined(world, wrenches, settings);
+long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings,
+               bool velocity_motors) {
+  if (!world.joints.empty()) return integrateJoined(world, wrenches, settings, velocity_motors);
   return integrateBodies(world, wrenches, settings);
 }
 

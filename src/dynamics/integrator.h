@@ -20,7 +20,10 @@ struct Wrench {
 // it advanced (the moving ones): the work counter that shows static bodies cost nothing. A world
 // with joints is advanced as one system, the joints' forces evaluated at every stage
 // (joints/joint_integrator.h); without joints each body is advanced on its own (integrateBodies).
-long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings);
+// `velocity_motors`: whether the joints' velocity motors act through the step (the time-stepping
+// model has already given them their impulse, bounded by max torque x dt, and passes false).
+long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings,
+               bool velocity_motors = true);
 long integrateBodies(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings);
 
 // The state of one body as the ODE sees it: y = (x, q, P, L), dy/dt = (P/m, 1/2 [0,w] q, F, tau)

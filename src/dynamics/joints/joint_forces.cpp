@@ -44,11 +44,11 @@ void jointAccelerationRows(const World& world, const std::vector<Wrench>& applie
   }
 }
 
-void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt) {
+void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt, bool velocity_motors) {
   addMotorTorques(world, wrenches);
   thread_local std::vector<JointRow> rows;
   thread_local Eigen::VectorXd b;
-  jointAccelerationRows(world, wrenches, dt, true, rows, b);
+  jointAccelerationRows(world, wrenches, dt, velocity_motors, rows, b);
   if (rows.empty()) return;
   const Eigen::VectorXd f = solveJointRows(rows, jointDelassus(world, rows), b);
   for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -17,8 +17,8 @@ namespace tumble {
 
 // Adds the PD motors' torques and the joints' constraint forces for the world's present state to
 // `wrenches` (one per body, holding the applied forces). `dt`: the step a velocity motor's target
-// is to be reached within.
-void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt);
+// is to be reached within; `velocity_motors` false leaves their rows out.
+void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt, bool velocity_motors = true);
 
 // The rows of that problem and their b (J a + J' v under `applied`, less a velocity motor's
 // target acceleration), for a solve that takes them with other rows (the Baraff model's resting

@@ -14,11 +14,12 @@ void setState(RigidBody& body, const BodyState& s) {
 
 }  // namespace
 
-long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
+long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings,
+                     bool velocity_motors) {
   const double dt = settings.dt;
   if (settings.integrator == Integrator::SemiImplicitEuler) {
     std::vector<Wrench> total = wrenches;
-    addJointForces(world, total, dt);
+    addJointForces(world, total, dt, velocity_motors);
     return integrateBodies(world, total, settings);
   }
   const std::size_t n = world.bodies.size();
@@ -33,7 +34,7 @@ long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const St
     for (std::size_t i = 0; i < n; ++i)
       if (!world.bodies[i].is_static && s > 0) setState(world.bodies[i], advanced(start[i], k[s - 1][i], h[s]));
     total = wrenches;
-    addJointForces(world, total, dt);
+    addJointForces(world, total, dt, velocity_motors);
     for (std::size_t i = 0; i < n; ++i) {
       if (world.bodies[i].is_static) continue;
       const BodyState at = s == 0 ? start[i] : advanced(start[i], k[s - 1][i], h[s]);

@@ -17,6 +17,7 @@
 
 namespace tumble {
 
-long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings);
+long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings,
+                     bool velocity_motors);
 
 }  // namespace tumble

@@ -43,7 +43,7 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   // nothing can touch (joints/joint_impulses.h).
   if (!world.joints.empty() && !shared.has_contacts) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });
   for (Wrench& w : shared.wrenches) w = Wrench{};
-  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
+  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings, false); });
   // Free motion with joints still follows them (their forces at every integrator stage hold the
   // centripetal pull); what drift is left is projected out, positions only (joint_projection.h).
   if (!world.joints.empty())
