@@ -258,10 +258,26 @@ void solveAtVelocityLevel(const RestingContext& ctx, const std::vector<const Con
   std::vector<const ImpulseRecord*> last(resting.size());
   for (std::size_t k = 0; k < resting.size(); ++k)
     last[k] = ctx.memory->last.find(ctx.world, *resting[k], ImpulseMemory::kMatchRadius);
-  IslandImpulseSettings gs;
-  gs.tolerance = tuning::kImpulseTolerance;
-  const IslandImpulses solved = solveIslandImpulses(ctx.world, rows, resting, b, warmStart(rows, last), gs, ctx.stats);
-  const Eigen::VectorXd forces = solved.p / step_s;
+  Eigen::VectorXd impulses;
+  if (ctx.world.joints.empty()) {
+    IslandImpulseSettings gs;
+    gs.tolerance = tuning::kImpulseTolerance;
+    impulses = solveIslandImpulses(ctx.world, rows, resting, b, warmStart(rows, last), gs, ctx.stats).p;
+  } else {
+    // The joints' rows swept with the island's (joints/contact_joint_lcp.h), as pivot() takes them:
+    // their velocity terms over the step are J v + (J a + J' v) step_s.
+    std::vector<JointRow> joint_rows;
+    Eigen::VectorXd joint_b;
+    std::vector<Wrench> applied = ctx.wrenches;
+    addMotorTorques(ctx.world, applied);
+    jointAccelerationRows(ctx.world, applied, step_s, false, joint_rows, joint_b);
+    joint_b *= step_s;
+    for (std::size_t j = 0; j < joint_rows.size(); ++j) joint_b[j] += jointRowVelocity(ctx.world, joint_rows[j]);
+    impulses = sweepContactsWithJoints(ctx.world, rows, pyramidLimits(rows, resting), b, joint_rows, joint_b,
+                                       warmStart(rows, last), ctx.stats)
+                   .head(n);
+  }
+  const Eigen::VectorXd forces = impulses / step_s;
   addForces(ctx.world, rows.rows, forces, ctx.wrenches);
   rememberForces(ctx, resting, rows, forces, nullptr);
 }

@@ -1,5 +1,11 @@
 #include "dynamics/joints/contact_joint_lcp.h"
 
+#include <limits>
+
+#include "dynamics/island_impulses.h"
+#include "dynamics/joints/generic_gauss_seidel.h"
+#include "dynamics/settings.h"
+
 namespace tumble {
 
 JointRow asGenericRow(const ContactRow& row) {
@@ -13,17 +19,21 @@ JointRow asGenericRow(const ContactRow& row) {
   return r;
 }
 
-lcp::LcpProblem withJointRows(const World& world, const lcp::LcpProblem& contacts,
-                              const std::vector<ContactRow>& contact_rows, const std::vector<JointRow>& joints,
-                              const Eigen::VectorXd& joint_b) {
-  const int nc = contacts.size(), nj = static_cast<int>(joints.size()), n = nc + nj;
-  // Contact rows first, so the friction rows' normal indices (findex) stay as they are.
+namespace {
+
+// Contact rows first, so the friction rows' normal indices (findex) stay as they are.
+std::vector<JointRow> allRows(const std::vector<ContactRow>& contact_rows, const std::vector<JointRow>& joints) {
   std::vector<JointRow> all;
-  all.reserve(n);
+  all.reserve(contact_rows.size() + joints.size());
   for (const ContactRow& row : contact_rows) all.push_back(asGenericRow(row));
   all.insert(all.end(), joints.begin(), joints.end());
+  return all;
+}
+
+// The combined problem's b and bounds, without A.
+lcp::LcpProblem boundsOf(const lcp::LcpProblem& contacts, const std::vector<JointRow>& joints, const Eigen::VectorXd& joint_b) {
+  const int nc = contacts.size(), nj = static_cast<int>(joints.size()), n = nc + nj;
   lcp::LcpProblem p;
-  p.A = jointDelassus(world, all);
   p.b.resize(n);
   p.b << contacts.b, joint_b;
   p.lo.resize(n);
@@ -41,20 +51,76 @@ lcp::LcpProblem withJointRows(const World& world, const lcp::LcpProblem& contact
   return p;
 }
 
-Eigen::VectorXd solveContactsWithJoints(World& world, const ContactLcp& contacts, const std::vector<JointRow>& joints,
-                                        const Eigen::VectorXd& joint_b, ContactSolveStats& stats) {
-  const int nc = contacts.size(), nj = static_cast<int>(joints.size());
-  const lcp::LcpProblem p = withJointRows(world, contacts.problem, contacts.rows, joints, joint_b);
-  lcp::LcpResult r = solveContactLcp(p, stats);
-  if (!usableLcpAnswer(r, p)) {
-    // No usable answer (a wedged, inconsistent set): the joints alone, then no contact impulse
-    // from this solve; the next step's contacts and the projections take it from there.
-    ++stats.iterative_fallbacks;
-    applyJointImpulses(world, joints, solveJointRows(joints, jointDelassus(world, joints), joint_b));
-    return Eigen::VectorXd::Zero(nc);
+}  // namespace
+
+lcp::LcpProblem withJointRows(const World& world, const lcp::LcpProblem& contacts,
+                              const std::vector<ContactRow>& contact_rows, const std::vector<JointRow>& joints,
+                              const Eigen::VectorXd& joint_b) {
+  lcp::LcpProblem p = boundsOf(contacts, joints, joint_b);
+  p.A = jointDelassus(world, allRows(contact_rows, joints));
+  return p;
+}
+
+Eigen::VectorXd sweepContactsWithJoints(const World& world, const ContactRows& contacts,
+                                        const std::vector<RowLimit>& limits, const Eigen::VectorXd& contact_b,
+                                        const std::vector<JointRow>& joints, const Eigen::VectorXd& joint_b,
+                                        const Eigen::VectorXd& contact_start, ContactSolveStats& stats) {
+  // The pyramid limits as bounds: a normal row pushes, a friction row within mu of its normal's.
+  const int nc = contacts.size(), nj = static_cast<int>(joints.size()), n = nc + nj;
+  lcp::LcpProblem p;
+  p.b.resize(n);
+  p.b << contact_b, joint_b;
+  p.lo = Eigen::VectorXd::Zero(n);
+  p.hi = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+  p.friction_of.assign(n, -1);
+  p.mu = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < nc; ++i)
+    if (limits[i].kind == RowLimit::Static) {
+      p.friction_of[i] = limits[i].normal;
+      p.mu[i] = limits[i].mu;
+    }
+  for (int i = 0; i < nj; ++i) {
+    p.lo[nc + i] = joints[i].lo;
+    p.hi[nc + i] = joints[i].hi;
   }
-  applyJointImpulses(world, joints, r.f.tail(nj));
-  return r.f.head(nc);
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
+  if (contact_start.size() == nc) start.head(nc) = contact_start;
+  GenericSweeps swept = solveGenericGaussSeidel(world, allRows(contacts.rows, joints), p, start,
+                                                IslandImpulseSettings{}.max_sweeps, tuning::kImpulseTolerance);
+  ++stats.iterative_islands;
+  stats.sweeps += swept.sweeps;
+  if (!swept.converged) ++stats.unconverged_sweeps;
+  return swept.f;
+}
+
+Eigen::VectorXd solveContactsWithJoints(World& world, const ContactLcp& contacts, const std::vector<JointRow>& joints,
+                                        const Eigen::VectorXd& joint_b, const ContactJointSettings& settings,
+                                        ContactSolveStats& stats) {
+  const int nc = contacts.size(), nj = static_cast<int>(joints.size()), n = nc + nj;
+  Eigen::VectorXd f;
+  bool solved = false;
+  if (n <= settings.max_direct_rows) {
+    const lcp::LcpProblem p = withJointRows(world, contacts.problem, contacts.rows, joints, joint_b);
+    lcp::LcpResult r = solveContactLcp(p, stats);
+    solved = usableLcpAnswer(r, p);
+    if (solved) f = std::move(r.f);
+    else ++stats.iterative_fallbacks;
+  }
+  if (!solved) {
+    // Too large to pivot, or pivoting stopped short: the same rows by projected Gauss-Seidel, the
+    // contacts warm-started from the last step's impulses, the joints from zero.
+    Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
+    if (settings.contact_start.size() == nc) start.head(nc) = settings.contact_start;
+    GenericSweeps swept = solveGenericGaussSeidel(world, allRows(contacts.rows, joints),
+                                                  boundsOf(contacts.problem, joints, joint_b), start,
+                                                  settings.max_sweeps, tuning::kImpulseTolerance);
+    ++stats.iterative_islands;
+    stats.sweeps += swept.sweeps;
+    if (!swept.converged) ++stats.unconverged_sweeps;
+    f = std::move(swept.f);
+  }
+  applyJointImpulses(world, joints, f.tail(nj));
+  return f.head(nc);
 }
 
 }  // namespace tumble

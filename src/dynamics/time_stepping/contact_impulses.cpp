@@ -70,7 +70,11 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     std::vector<JointRow> joint_rows;
     Eigen::VectorXd joint_b;
     jointStepRows(world, dt, joint_rows, joint_b);
-    store(all, exact, solveContactsWithJoints(world, exact, joint_rows, joint_b, stats));
+    ContactJointSettings joined;
+    joined.max_direct_rows = settings.contact.max_direct_rows;
+    joined.max_sweeps = settings.time_stepping_sweeps;
+    joined.contact_start = warmStart(exact, last);
+    store(all, exact, solveContactsWithJoints(world, exact, joint_rows, joint_b, joined, stats));
   } else {
     // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
     // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
