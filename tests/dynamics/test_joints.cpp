@@ -198,7 +198,7 @@ TEST_CASE("a hinge stays within its limits, and gains no energy stopping there",
   CHECK(gap < 1e-6);
 }
 
-TEST_CASE("a struck pendulum keeps its joint through the impact (Baraff model)", "[joints]") {
+TEST_CASE("a struck pendulum keeps its joint and turns as the closed form says (Baraff model)", "[joints]") {
   const Eigen::Vector3d anchor(0, 0, 2);
   BodySpec ball;
   ball.name = "ball";
@@ -206,10 +206,12 @@ TEST_CASE("a struck pendulum keeps its joint through the impact (Baraff model)",
   ball.radius_m = 0.05;
   ball.mass_kg = 0.5;
   ball.restitution = 0.8;
+  ball.friction = 0;   // the rod's face is off its axis: friction would turn the impulse
   ball.position_m = {-0.3, 0, 1.2};
   ball.velocity_m_s = {3, 0, 0};
   BodySpec r = rod("rod", anchor, 0, 1, 0.04);
   r.restitution = 0.8;
+  r.friction = 0;
   JointRun run = makeRun({r, ball}, {joint(JointType::Hinge, "world", "rod", anchor)}, ContactModel::Baraff, 1.0 / 240,
                          Eigen::Vector3d::Zero());
   const double e0 = totalEnergy(run.built.world);
@@ -219,7 +221,19 @@ TEST_CASE("a struck pendulum keeps its joint through the impact (Baraff model)",
     highest = std::max(highest, totalEnergy(world));
   });
   const World& world = run.built.world;
-  CHECK(world.bodies[0].angularVelocity().y() < -0.5);   // struck below the hinge towards +x: it swings
+  // The closed form: the rod turns about its hinge, so at the struck point, r below the hinge, it
+  // has the effective mass I / r^2; Newton's law with e between the ball and that mass.
+  const double m = 0.5, v0 = 3, e = 0.8, r_hit = 0.8;
+  const double I = (0.04 * 0.04 + 1.0) / 12 + 0.25, M = I / (r_hit * r_hit);
+  const double ball_after = (m - e * M) * v0 / (m + M), spin_after = -m * (1 + e) * v0 / ((m + M) * r_hit);
+  const double ball_error = std::abs(world.bodies[1].velocity().x() - ball_after) / v0;
+  const double spin_error = std::abs(world.bodies[0].angularVelocity().y() - spin_after) / std::abs(spin_after);
+  figure("struck pendulum: ball speed error / v0", ContactModel::Baraff, ball_error);
+  figure("struck pendulum: rod spin relative error", ContactModel::Baraff, spin_error);
+  // The impact is one problem with the joint (JointsHoldImpulses): exact to rounding (measured
+  // 1e-16 and 2e-13). Solved as a free rod and then projected, the ball kept 0.351 m/s, not 0.244.
+  CHECK(ball_error < 1e-9);
+  CHECK(spin_error < 1e-9);
   CHECK(gap < 1e-6);
   CHECK(highest <= e0 * (1 + 1e-9));
 }

@@ -15,8 +15,8 @@ namespace tumble {
 void BaraffModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
   if (!world.joints.empty())
     joints_line_ = "joints      " + describeJoints(world) +
-                   ": constraint forces with the applied ones at every integrator stage, their impulse "
-                   "after each impact, drift projected (positions, then velocities)";
+                   ": constraint forces at every integrator stage, their rows in the resting islands' solve, "
+                   "impacts solved with the joints holding, drift projected (positions, then velocities)";
 }
 
 void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
@@ -42,12 +42,13 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     bool hit = false;
     const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
     shared.timed(Collide, [&] {
+      const JointsHoldImpulses joints_hold(!world.joints.empty());
       hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, settings.dt,
                                counters.contacts);
     });
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
-    // An impulse on a joined body (a struck pendulum) pulls its joint apart at the velocity level;
-    // the joints' reaction impulse follows at once, so the joint holds through the impact.
+    // The impacts were solved with the joints holding (JointsHoldImpulses: a struck pendulum turns
+    // about its hinge); what velocity error rounding left along the joints' rows is removed.
     if (hit && !world.joints.empty()) removeJointVelocityError(world);
   }
   shared.timed(Forces, [&] {

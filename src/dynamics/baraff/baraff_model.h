@@ -13,8 +13,9 @@
 //   correct     project out residual penetration, in passes on the    drift_correction.h
 //               contacts of the end state, while a pass moves something
 //   joints      (a world with joints) their forces are evaluated at    joints/joint_forces.h
-//               every integrator stage, their impulse follows each     joints/joint_projection.h
-//               impact, and their drift is projected out
+//               every integrator stage, with the resting contacts'     joints/contact_joint_lcp.h
+//               rows in the resting solve; impacts are solved with     joints/joint_mobility.h
+//               the joints holding; their drift is projected out       joints/joint_projection.h
 #pragma once
 
 #include <vector>
