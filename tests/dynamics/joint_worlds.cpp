@@ -31,6 +31,19 @@ JointSpec joint(JointType type, const std::string& a, const std::string& b, cons
   return j;
 }
 
+void addChain(int links, const Eigen::Vector3d& top, double length, double mass, std::vector<BodySpec>& bodies,
+              std::vector<JointSpec>& joints) {
+  Eigen::Vector3d at = top;
+  std::string previous = "world";
+  for (int i = 0; i < links; ++i) {
+    const std::string name = "link" + std::to_string(i);
+    bodies.push_back(rod(name, at, M_PI / 2, length, 0.02, mass));
+    joints.push_back(joint(JointType::Ball, previous, name, at));
+    at = rodEnd(at, M_PI / 2, length);
+    previous = name;
+  }
+}
+
 JointRun makeRun(std::vector<BodySpec> bodies, std::vector<JointSpec> joints, ContactModel model, double dt,
                  const Eigen::Vector3d& gravity) {
   Scene scene;

@@ -18,6 +18,11 @@ BodySpec rod(const std::string& name, const Eigen::Vector3d& anchor, double angl
 // The lower end of such a rod.
 Eigen::Vector3d rodEnd(const Eigen::Vector3d& anchor, double angle, double length = 1);
 
+// A chain of `links` rods ("link0", ...) of `length` and `mass`, straight out along +x from `top`,
+// where the first hangs from the world; each joined to the next by a ball joint at their ends.
+void addChain(int links, const Eigen::Vector3d& top, double length, double mass, std::vector<BodySpec>& bodies,
+              std::vector<JointSpec>& joints);
+
 JointSpec joint(JointType type, const std::string& a, const std::string& b, const Eigen::Vector3d& anchor,
                 const Eigen::Vector3d& axis = Eigen::Vector3d::UnitY());
 

@@ -93,15 +93,7 @@ TEST_CASE("a 10-link chain keeps each joint's gap below 1e-6 m", "[joints]") {
   const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
   std::vector<BodySpec> links;
   std::vector<JointSpec> joints;
-  Eigen::Vector3d at(0, 0, 2);
-  std::string previous = "world";
-  for (int i = 0; i < 10; ++i) {
-    const std::string name = "link" + std::to_string(i);
-    links.push_back(rod(name, at, M_PI / 2, 0.15, 0.02, 0.2));
-    joints.push_back(joint(JointType::Ball, previous, name, at));
-    at = rodEnd(at, M_PI / 2, 0.15);
-    previous = name;
-  }
+  addChain(10, Eigen::Vector3d(0, 0, 2), 0.15, 0.2, links, joints);
   JointRun run = makeRun(links, joints, model);
   double gap = 0, fastest = 0;
   simulate(run, 5, [&](const World& world) {
@@ -312,6 +304,56 @@ TEST_CASE("a body does not fall asleep while a body joined to it moves", "[joint
   });
   CHECK(swinging > 100);
   CHECK(apart == 0);
+}
+
+TEST_CASE("the automatic model counts joined bodies as held, not as a crowd of free landings", "[joints]") {
+  // 25 links of a chain touch nothing at the start, more than the 20 free bodies that make auto
+  // choose time stepping with ten sweeps; joined, they are no crowd, and auto keeps Baraff.
+  BodySpec ground;
+  ground.name = "ground";
+  ground.shape = ShapeKind::Plane;
+  ground.is_static = true;
+  std::vector<BodySpec> bodies{ground};
+  std::vector<JointSpec> joints;
+  addChain(25, Eigen::Vector3d(0, 0, 5), 0.15, 0.2, bodies, joints);
+  JointRun run = makeRun(bodies, joints, ContactModel::Auto);
+  const Pipeline pipeline(run.built.world, run.step);
+  CHECK(pipeline.runningModel(run.step) == ContactModel::Baraff);
+}
+
+TEST_CASE("two bodies on a fixed joint fly and tumble as one", "[joints]") {
+  const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
+  BodySpec a, b;
+  a.name = "a";
+  a.box_size_m = {0.4, 0.2, 0.1};
+  a.mass_kg = 1;
+  a.position_m = {0, 0, 1};
+  b = a;
+  b.name = "b";
+  b.box_size_m = {0.1, 0.1, 0.3};
+  b.mass_kg = 0.5;
+  b.position_m = {0.25, 0, 1.05};
+  // Both start moving as one rigid body: a spin about an axis of neither's symmetry, so the pair
+  // tumbles (its inertia is not the bodies' own).
+  const Eigen::Vector3d spin(1, 2, 3), v(0.5, 0, 0), centre(0.1, 0, 1);
+  for (BodySpec* body : {&a, &b}) {
+    body->angular_velocity_rad_s = spin;
+    body->velocity_m_s = v + spin.cross(body->position_m - centre);
+  }
+  JointRun run = makeRun({a, b}, {joint(JointType::Fixed, "a", "b", Eigen::Vector3d(0.2, 0, 1.05))}, model, 1.0 / 240,
+                         Eigen::Vector3d::Zero());
+  const World& world = run.built.world;
+  const Eigen::Quaterniond relative = world.bodies[0].q.conjugate() * world.bodies[1].q;
+  const Eigen::Vector3d momentum = world.bodies[0].P + world.bodies[1].P;
+  double gap = 0, turned = 0;
+  simulate(run, 2, [&](const World& w) {
+    gap = std::max(gap, anchorGap(w, w.joints[0]));
+    turned = std::max(turned, relative.angularDistance(w.bodies[0].q.conjugate() * w.bodies[1].q));
+  });
+  CHECK(gap < 1e-9);
+  CHECK(turned < 1e-9);   // the projection holds the relative orientation to 1e-12 rad per pass
+  // Joint forces are internal: the pair's momentum is kept to rounding.
+  CHECK((world.bodies[0].P + world.bodies[1].P - momentum).norm() < 1e-12);
 }
 
 TEST_CASE("a run with joints is bit-identical when repeated", "[joints]") {

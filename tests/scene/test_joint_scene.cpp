@@ -7,6 +7,7 @@
 #include "base/error.h"
 #include "dynamics/joints/joint.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
 #include "scene/world_builder.h"
 
 using namespace tumble;
@@ -92,4 +93,18 @@ TEST_CASE("joint errors name the field: a body called world, a joint that holds 
   "joints": [ { "name": "j", "type": "ball", "bodies": ["world", "box"], "anchor_m": [0, 0, 2.5] },
               { "name": "j", "type": "ball", "bodies": ["world", "box"], "anchor_m": [0, 0, 1.5] } ] })")
             .find("/joints/1/name: another joint is already named \"j\"") != std::string::npos);
+}
+
+TEST_CASE("--contact-model penalty on a scene with joints is a usage error", "[scene][joints]") {
+  Scene s = parseScene(kArm, "scenes/test.json");
+  try {
+    setContactModel(s, ContactModel::Penalty, "--contact-model");
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.code() == ExitCode::Usage);
+    CHECK_THAT(e.what(), Catch::StartsWith("--contact-model: the penalty contact model does not simulate joints, "
+                                           "and the scene has 2 (\"joints\")"));
+  }
+  setContactModel(s, ContactModel::TimeStepping, "--contact-model");
+  CHECK(s.simulation.step.model == ContactModel::TimeStepping);
 }

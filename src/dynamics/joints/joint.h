@@ -4,10 +4,11 @@
 // at its centre of mass, principal axes), so they move with the bodies; the world side of a joint
 // to the world is kept in world coordinates.
 //
-// How the models treat joints: joint_forces.h (the constraint forces at the acceleration level,
-// evaluated at every stage of the integrator), joint_impulses.h (the velocity level: the
-// time-stepping model's step, and the impulses that follow an impact in the Baraff model) and
-// joint_projection.h (drift correction that adds no energy).
+// How the models treat joints: joint_rows.h (the rows), joint_forces.h (the constraint forces at
+// the acceleration level, evaluated at every stage of the integrator: joint_integrator.h),
+// contact_joint_lcp.h (joint rows solved with contact rows: the Baraff model's resting islands,
+// the time-stepping model's impulses, joint_impulses.h), joint_mobility.h (impacts on joined
+// bodies) and joint_projection.h (drift correction that adds no energy).
 #pragma once
 
 #include <Eigen/Core>
