@@ -95,7 +95,7 @@ TEST_CASE("joint errors name the field: a body called world, a joint that holds 
             .find("/joints/1/name: another joint is already named \"j\"") != std::string::npos);
 }
 
-TEST_CASE("--contact-model penalty on a scene with joints is a usage error", "[scene][joints]") {
+TEST_CASE("a --contact-model penalty on a scene with joints is a usage error", "[scene][joints]") {
   Scene s = parseScene(kArm, "scenes/test.json");
   try {
     setContactModel(s, ContactModel::Penalty, "--contact-model");
