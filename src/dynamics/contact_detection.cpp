@@ -33,6 +33,14 @@ ContactDetector::ContactDetector(const World& world) {
   // has work only if a moving body can meet another body (the ground is tested directly).
   has_pairs_ = moving > 0 && (moving + fixed > 1 || !planes_.empty());
   has_body_pairs_ = moving > 0 && moving + fixed > 1;
+  for (const Joint& j : world.joints)
+    if (j.a >= 0 && j.b >= 0) joined_.emplace_back(std::min(j.a, j.b), std::max(j.a, j.b));
+  std::sort(joined_.begin(), joined_.end());
+}
+
+bool ContactDetector::joined(int a, int b) const {
+  if (joined_.empty()) return false;
+  return std::binary_search(joined_.begin(), joined_.end(), std::pair(std::min(a, b), std::max(a, b)));
 }
 
 void ContactDetector::updateBoxes(double margin, const std::vector<double>* reach) {
@@ -91,6 +99,7 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     PiecePair key{c.a, c.b};
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
+    if (joined(pa.body, pb.body)) continue;
     const double margin = settings.margin_m + reachOf(pa.body) + reachOf(pb.body);
     if (collide(pa.hull, poses_[pa.body], pb.hull, poses_[pb.body], margin, caches_[key], manifold_))
       addPairContacts(world, key, manifold_, out, pairs);
@@ -99,7 +108,7 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     double height = world.bodies[plane].x.z();
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
       const RigidBody& body = world.bodies[pieces_[i].body];
-      if (body.is_static) continue;
+      if (body.is_static || joined(pieces_[i].body, plane)) continue;
       const double margin = settings.margin_m + reachOf(pieces_[i].body);
       if (collideGround(*pieces_[i].shape, poses_[pieces_[i].body], height, margin, manifold_))
         addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
@@ -126,6 +135,7 @@ void ContactDetector::nearPairs(const World& world, const std::vector<double>& r
   for (const ProxyPair& c : near_candidates_) {
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
+    if (joined(pa.body, pb.body)) continue;
     Eigen::Vector3d axis;
     double gap = separation(pa.hull, poseOf(world.bodies[pa.body]), pb.hull, poseOf(world.bodies[pb.body]),
                             near_caches_[PiecePair{c.a, c.b}], axis);

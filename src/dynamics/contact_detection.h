@@ -104,6 +104,10 @@ class ContactDetector {
   std::map<PiecePair, SatCache> near_caches_;
   double thinnest_ = std::numeric_limits<double>::infinity();
   ContactManifold manifold_;
+  // Bodies joined to each other (World::joints) never collide: their pieces meet at the joint by
+  // design. Sorted (lower index first); empty without joints.
+  std::vector<std::pair<int, int>> joined_;
+  bool joined(int a, int b) const;
   bool has_pairs_ = false;
   bool has_body_pairs_ = false;   // two bodies, one moving: the broad phase has work
   mutable Work work_;             // counted in const helpers too

@@ -2,7 +2,15 @@
 
 #include <cmath>
 
+#include "dynamics/joints/joint_mobility.h"
+#include "dynamics/joints/joint_projection.h"
+
 namespace tumble {
+
+namespace {
+// Whether a JointsHoldImpulses scope is open on this thread.
+thread_local bool joints_hold = false;
+}  // namespace
 
 ContactRow rowAlong(const World& world, const Contact& c, const Eigen::Vector3d& dir) {
   ContactRow row;
@@ -94,6 +102,7 @@ Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows
       A(i, j) = A(j, i) = v;
     }
   }
+  if (joints_hold && !world.joints.empty()) return constrainedDelassus(world, rows, A);
   return A;
 }
 
@@ -112,6 +121,10 @@ void applyAlongRows(World& world, const std::vector<ContactRow>& rows, const Eig
       B.L += r.rb.cross(push);
     }
   }
+  if (joints_hold && !world.joints.empty()) removeJointVelocityError(world);
 }
+
+JointsHoldImpulses::JointsHoldImpulses(bool on) : previous_(joints_hold) { joints_hold = joints_hold || on; }
+JointsHoldImpulses::~JointsHoldImpulses() { joints_hold = previous_; }
 
 }  // namespace tumble

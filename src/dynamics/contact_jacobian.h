@@ -43,4 +43,20 @@ Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows
 // Applies impulses (N s) along the rows: P and L of both bodies change at once.
 void applyAlongRows(World& world, const std::vector<ContactRow>& rows, const Eigen::VectorXd& f);
 
+// While one is alive (on this thread), a world's joints hold through every impulse: delassus()
+// gives J W J^T with the joints' constrained mobility W (joints/joint_mobility.h) and
+// applyAlongRows() follows each impulse with the joints' reaction. The Baraff model's collide stage
+// opens one for a world with joints, so an impact on a joined body is solved with the joint as one
+// problem. Scopes nest; `on` false changes nothing.
+class JointsHoldImpulses {
+ public:
+  explicit JointsHoldImpulses(bool on);
+  ~JointsHoldImpulses();
+  JointsHoldImpulses(const JointsHoldImpulses&) = delete;
+  JointsHoldImpulses& operator=(const JointsHoldImpulses&) = delete;
+
+ private:
+  bool previous_;
+};
+
 }  // namespace tumble

@@ -2,26 +2,24 @@
 
 #include <cmath>
 
-namespace tumble {
-namespace {
+#include "dynamics/joints/joint_integrator.h"
 
-// The state of one body as the ODE sees it: y = (x, q, P, L), dy/dt = (P/m, 1/2 [0,w] q, F, tau)
-// (Yang, "Rigid Bodies and Contacts", 2020: "rigid body state"). Derivatives of q are kept as plain 4-vectors.
-struct State {
-  Eigen::Vector3d x, P, L;
-  Eigen::Vector4d q;   // w, x, y, z
-};
+namespace tumble {
 
 Eigen::Quaterniond toQuaternion(const Eigen::Vector4d& v) {
   return Eigen::Quaterniond(v[0], v[1], v[2], v[3]).normalized();
 }
 
-State derivative(const RigidBody& body, const State& s, const Wrench& wrench) {
+BodyState stateOf(const RigidBody& body) {
+  return {body.x, body.P, body.L, Eigen::Vector4d(body.q.w(), body.q.x(), body.q.y(), body.q.z())};
+}
+
+BodyState derivativeOf(const RigidBody& body, const BodyState& s, const Wrench& wrench) {
   Eigen::Matrix3d R = toQuaternion(s.q).toRotationMatrix();
   Eigen::Vector3d w = R * body.inv_inertia_body.cwiseProduct(R.transpose() * s.L);
   Eigen::Quaterniond q(s.q[0], s.q[1], s.q[2], s.q[3]);
   Eigen::Quaterniond dq = Eigen::Quaterniond(0, w.x(), w.y(), w.z()) * q;
-  State d;
+  BodyState d;
   d.x = s.P * body.inv_mass;
   d.q = 0.5 * Eigen::Vector4d(dq.w(), dq.x(), dq.y(), dq.z());
   d.P = wrench.force;
@@ -29,17 +27,19 @@ State derivative(const RigidBody& body, const State& s, const Wrench& wrench) {
   return d;
 }
 
-State advance(const State& s, const State& d, double h) {
+BodyState advanced(const BodyState& s, const BodyState& d, double h) {
   return {s.x + h * d.x, s.P + h * d.P, s.L + h * d.L, s.q + h * d.q};
 }
 
+namespace {
+
 // Classical fourth-order Runge-Kutta over the 13-dimensional state, then renormalise q.
 void stepRk4(RigidBody& body, const Wrench& wrench, double dt) {
-  State s{body.x, body.P, body.L, Eigen::Vector4d(body.q.w(), body.q.x(), body.q.y(), body.q.z())};
-  State k1 = derivative(body, s, wrench);
-  State k2 = derivative(body, advance(s, k1, dt / 2), wrench);
-  State k3 = derivative(body, advance(s, k2, dt / 2), wrench);
-  State k4 = derivative(body, advance(s, k3, dt), wrench);
+  BodyState s = stateOf(body);
+  BodyState k1 = derivativeOf(body, s, wrench);
+  BodyState k2 = derivativeOf(body, advanced(s, k1, dt / 2), wrench);
+  BodyState k3 = derivativeOf(body, advanced(s, k2, dt / 2), wrench);
+  BodyState k4 = derivativeOf(body, advanced(s, k3, dt), wrench);
   auto combine = [&](auto a, auto b, auto c, auto d) { return (a + 2 * b + 2 * c + d) * (dt / 6); };
   body.x += combine(k1.x, k2.x, k3.x, k4.x);
   body.P += combine(k1.P, k2.P, k3.P, k4.P);
@@ -105,18 +105,24 @@ Eigen::Quaterniond rotationOver(const Eigen::Vector3d& w, double dt) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, w / w.norm()));
 }
 
-long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
-  long advanced = 0;
+long integrateBodies(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings) {
+  long count = 0;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     RigidBody& body = world.bodies[i];
     if (body.is_static) continue;
-    ++advanced;
+    ++count;
     switch (settings.integrator) {
       case Integrator::Rk4: stepRk4(body, wrenches[i], settings.dt); break;
       case Integrator::SemiImplicitEuler: stepSemiImplicitEuler(body, wrenches[i], settings.dt); break;
     }
   }
-  return advanced;
+  return count;
+}
+
+long integrate(World& world, const std::vector<Wrench>& wrenches, const StepSettings& settings,
+               bool velocity_motors) {
+  if (!world.joints.empty()) return integrateJoined(world, wrenches, settings, velocity_motors);
+  return integrateBodies(world, wrenches, settings);
 }
 
 }  // namespace tumble

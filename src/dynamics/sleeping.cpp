@@ -55,6 +55,13 @@ bool SleepKeeper::settle(World& world, const std::vector<Contact>& contacts, con
     if (!fixed_a && !fixed_b) parent_[find(c.a)] = find(c.b);
     else if (fixed_a != fixed_b) supported_[fixed_a ? c.b : c.a] = 1;
   }
+  // Joined bodies sleep and wake together (a link frozen under a moving one would hold it to a
+  // body that no longer moves), and a joint to the world or a static body supports.
+  for (const Joint& j : world.joints) {
+    const bool fixed_a = j.a < 0 || world.bodies[j.a].is_static, fixed_b = j.b < 0 || world.bodies[j.b].is_static;
+    if (!fixed_a && !fixed_b) parent_[find(j.a)] = find(j.b);
+    else if (fixed_a != fixed_b) supported_[fixed_a ? j.b : j.a] = 1;
+  }
   // An island sleeps when every body in it has been quiet long enough and one of them rests on
   // something fixed: a body floating free at a crawl keeps its crawl (it is not at rest, it is
   // coasting), and a body that is slow only at the top of a bounce is not quiet for long.

@@ -11,6 +11,7 @@
 
 #include "dynamics/settings.h"
 #include "geometry/shape_kind.h"
+#include "scene/joint_spec.h"
 #include "scene/overlay_spec.h"
 
 namespace tumble {
@@ -143,6 +144,7 @@ struct Scene {
   std::string name;                                    // file stem: default output names
   int schema_version = 1;
   std::vector<BodySpec> bodies;
+  std::vector<JointSpec> joints;                       // "joints" (scene/joint_reader.h)
   CameraSpec camera;                                   // "camera", else the first of "cameras"
   std::vector<CameraSpec> cameras;                     // "cameras": named, picked by --camera
   LightingSpec lighting;

@@ -7,6 +7,7 @@
 #include "base/error.h"
 #include "scene/body_reader.h"
 #include "scene/camera_reader.h"
+#include "scene/joint_reader.h"
 #include "scene/json_text.h"
 #include "scene/object_reader.h"
 #include "scene/overlay_reader.h"
@@ -248,6 +249,7 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file, con
   scene.output = root.optionalString("output");
   if (scene.output) checkSceneOutput(root, *scene.output);
   readBodies(root, ctx, scene);
+  readJoints(root, ctx, scene);
   checkCameraBodies(scene, ctx);
   readOverlays(root, ctx, scene);
   root.rejectUnknownKeys();

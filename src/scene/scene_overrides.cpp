@@ -49,6 +49,9 @@ void setContactModel(Scene& scene, ContactModel model, const std::string& flag) 
   if (model != ContactModel::Baraff && model != ContactModel::Auto && law != RestitutionLaw::Newton)
     usage(flag + ": only the baraff contact model has a choice of restitution law, and the scene asks for " +
           (law == RestitutionLaw::Poisson ? "\"poisson\"" : "\"stronge\"") + " (simulation.restitution_law)");
+  if (model == ContactModel::Penalty && !scene.joints.empty())
+    usage(flag + ": the penalty contact model does not simulate joints, and the scene has " +
+          std::to_string(scene.joints.size()) + " (\"joints\")");
   scene.simulation.step.model = model;
 }
 

@@ -8,6 +8,7 @@
 #include "geometry/mass_properties.h"
 #include "geometry/mesh_import.h"
 #include "geometry/primitives.h"
+#include "scene/joint_builder.h"
 
 namespace tumble {
 namespace {
@@ -145,6 +146,7 @@ BuiltWorld buildWorld(const Scene& scene) {
   out.step = scene.simulation.step;
   out.world.bodies.reserve(scene.bodies.size());
   for (const BodySpec& spec : scene.bodies) out.world.bodies.push_back(buildBody(scene, spec, out.warnings));
+  addJoints(scene.joints, out.world);   // before the overlap check: joined bodies do not collide
   reportStartOverlaps(scene, out);
   return out;
 }

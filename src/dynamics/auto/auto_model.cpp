@@ -23,6 +23,11 @@ void AutoModel::start(const World& world, const StepSettings& settings, SharedSt
     shared.detector.detect(world, settings.contact, contacts);
     for (const Contact& c : contacts) touching[c.a] = touching[c.b] = 1;
   }
+  // A joined body is held, not a free landing: a long chain is no crowd (and time stepping's ten
+  // sweeps would leave its joints loose).
+  for (const Joint& j : world.joints)
+    for (int k : {j.a, j.b})
+      if (k >= 0) touching[k] = 1;
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     if (world.bodies[i].is_static) continue;
     ++moving;

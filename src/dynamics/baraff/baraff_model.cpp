@@ -8,8 +8,17 @@
 #include "dynamics/baraff/impact_log.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
+#include "dynamics/joints/joint_projection.h"
+#include "dynamics/joints/joint_summary.h"
 
 namespace tumble {
+
+void BaraffModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
+  if (!world.joints.empty())
+    joints_line_ = "joints      " + describeJoints(world) +
+                   ": constraint forces at every integrator stage, their rows in the resting islands' solve, "
+                   "impacts solved with the joints holding, drift projected (positions, then velocities)";
+}
 
 void BaraffModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
   last_dt_ = settings.dt;
@@ -37,11 +46,15 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     ImpactLogger impacts;   // overlays only: reads the state around the impulses, writes none
     if (shared.impact_log) impacts.before(world, shared.contacts, settings.contact);
     shared.timed(Collide, [&] {
+      const JointsHoldImpulses joints_hold(!world.joints.empty());
       hit = resolveCollisions(world, shared.contacts, settings.contact, min_bounce, settings.dt,
                                counters.contacts);
     });
     if (shared.impact_log && hit) impacts.after(world, *shared.impact_log);
     if (hit && counters.impact_times.size() < 1000) counters.impact_times.push_back(world.time);
+    // The impacts were solved with the joints holding (JointsHoldImpulses: a struck pendulum turns
+    // about its hinge); what velocity error rounding left along the joints' rows is removed.
+    if (hit && !world.joints.empty()) removeJointVelocityError(world);
   }
   shared.timed(Forces, [&] {
     if (shared.apply_gravity) applyGravity(world, shared.wrenches);
@@ -68,7 +81,10 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
       lifting_[i] = normalVelocity(world, shared.contacts[i]) > settings.contact.resting_speed_m_s;
   }
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub); });
-  if (!shared.has_contacts) return h;
+  if (!shared.has_contacts) {
+    correctJoints(world, shared);
+    return h;
+  }
 
   shared.timed(Detect, [&] { shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_); });
   double taken = h;
@@ -103,7 +119,19 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     if (n.moved == 0) break;
     shared.contacts_fresh = false;
   }
+  correctJoints(world, shared);
   return taken;
+}
+
+// The joints' drift correction at the end of a sub-step (joints/joint_projection.h): positions by
+// a mass-weighted projection, then the velocity error along the rows by an impulse that only
+// removes energy. A move leaves the contacts in hand stale.
+void BaraffModel::correctJoints(World& world, SharedStages& shared) {
+  if (world.joints.empty()) return;
+  shared.timed(Correct, [&] {
+    if (projectJointPositions(world).passes > 0) shared.contacts_fresh = false;
+    removeJointVelocityError(world);
+  });
 }
 
 std::vector<std::string> BaraffModel::describe(const StepSettings& settings, const SharedStages& shared) const {
@@ -115,6 +143,7 @@ std::vector<std::string> BaraffModel::describe(const StepSettings& settings, con
   if (shared.apply_gravity) lines.push_back("forces      gravity on " + shared.movingBodies());
   if (shared.has_contacts) lines.push_back("resting     contact forces: LCP a = A f + b (Dantzig pivoting) + Coulomb friction");
   lines.push_back(shared.integrateLine(settings));
+  if (!joints_line_.empty()) lines.push_back(joints_line_);
   if (shared.has_contacts) {
     lines.push_back("back-step   bisection to the first contact when a step ends too deep");
     lines.push_back("correct     position projection of residual penetration");

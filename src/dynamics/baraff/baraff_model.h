@@ -12,6 +12,10 @@
 //   back-step   bisection to the first contact if it ends too deep back_step.h
 //   correct     project out residual penetration, in passes on the    drift_correction.h
 //               contacts of the end state, while a pass moves something
+//   joints      (a world with joints) their forces are evaluated at    joints/joint_forces.h
+//               every integrator stage, with the resting contacts'     joints/contact_joint_lcp.h
+//               rows in the resting solve; impacts are solved with     joints/joint_mobility.h
+//               the joints holding; their drift is projected out       joints/joint_projection.h
 #pragma once
 
 #include <vector>
@@ -27,6 +31,7 @@ namespace tumble {
 
 class BaraffModel final : public ContactModelStep {
  public:
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
   // The resting solve's impulses, over the step given (resting_forces.h: step_s).
@@ -35,6 +40,7 @@ class BaraffModel final : public ContactModelStep {
  private:
   // One sub-step of at most `remaining` seconds; returns its length.
   double substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining);
+  void correctJoints(World& world, SharedStages& shared);
 
   RestingMemory resting_memory_;   // warm start of resting islands too large to pivot
   double last_dt_ = 0;             // s: the last step's length (refined steps are shorter)
@@ -45,6 +51,7 @@ class BaraffModel final : public ContactModelStep {
   std::vector<Contact> contacts_end_;
   std::vector<PiecePair> pairs_end_;
   std::vector<char> lifting_;      // per contact at the start: separating as the sub-step starts
+  std::string joints_line_;        // for `tumble check`; empty without joints
 };
 
 }  // namespace tumble

@@ -5,6 +5,9 @@
 namespace tumble {
 
 ImpactMomenta::ImpactMomenta(const World& world, const std::vector<const Contact*>& points) {
+  if (!world.joints.empty())
+    for (std::size_t b = 0; b < world.bodies.size(); ++b)
+      if (!world.bodies[b].is_static) bodies.push_back(static_cast<int>(b));
   for (const Contact* c : points)
     for (int b : {c->a, c->b})
       if (!world.bodies[b].is_static && std::find(bodies.begin(), bodies.end(), b) == bodies.end())

@@ -7,6 +7,9 @@
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/island_impulses.h"
+#include "dynamics/joints/contact_joint_lcp.h"
+#include "dynamics/joints/joint_forces.h"
+#include "dynamics/joints/pd_motor.h"
 #include "dynamics/row_gauss_seidel.h"
 
 namespace tumble {
@@ -255,10 +258,26 @@ void solveAtVelocityLevel(const RestingContext& ctx, const std::vector<const Con
   std::vector<const ImpulseRecord*> last(resting.size());
   for (std::size_t k = 0; k < resting.size(); ++k)
     last[k] = ctx.memory->last.find(ctx.world, *resting[k], ImpulseMemory::kMatchRadius);
-  IslandImpulseSettings gs;
-  gs.tolerance = tuning::kImpulseTolerance;
-  const IslandImpulses solved = solveIslandImpulses(ctx.world, rows, resting, b, warmStart(rows, last), gs, ctx.stats);
-  const Eigen::VectorXd forces = solved.p / step_s;
+  Eigen::VectorXd impulses;
+  if (ctx.world.joints.empty()) {
+    IslandImpulseSettings gs;
+    gs.tolerance = tuning::kImpulseTolerance;
+    impulses = solveIslandImpulses(ctx.world, rows, resting, b, warmStart(rows, last), gs, ctx.stats).p;
+  } else {
+    // The joints' rows swept with the island's (joints/contact_joint_lcp.h), as pivot() takes them:
+    // their velocity terms over the step are J v + (J a + J' v) step_s.
+    std::vector<JointRow> joint_rows;
+    Eigen::VectorXd joint_b;
+    std::vector<Wrench> applied = ctx.wrenches;
+    addMotorTorques(ctx.world, applied);
+    jointAccelerationRows(ctx.world, applied, step_s, false, joint_rows, joint_b);
+    joint_b *= step_s;
+    for (std::size_t j = 0; j < joint_rows.size(); ++j) joint_b[j] += jointRowVelocity(ctx.world, joint_rows[j]);
+    impulses = sweepContactsWithJoints(ctx.world, rows, pyramidLimits(rows, resting), b, joint_rows, joint_b,
+                                       warmStart(rows, last), ctx.stats)
+                   .head(n);
+  }
+  const Eigen::VectorXd forces = impulses / step_s;
   addForces(ctx.world, rows.rows, forces, ctx.wrenches);
   rememberForces(ctx, resting, rows, forces, nullptr);
 }
@@ -306,8 +325,26 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     coupling = delassus(world, all).block(0, n, n, m);
   }
   slide.g = Eigen::VectorXd::Zero(m);   // dynamic friction magnitudes
+  // A world with joints: a resting body may hang from one (a chain lying on the ground), so the
+  // joints' rows join the island's problem and its contact forces are those the joints allow
+  // (joints/contact_joint_lcp.h). The joint forces found with them are dropped: the integrator
+  // evaluates the joints again at each of its stages, with these contact forces held.
+  std::vector<JointRow> joint_rows;
+  Eigen::VectorXd joint_b;
+  if (!world.joints.empty()) {
+    std::vector<Wrench> applied = ctx.wrenches;
+    addMotorTorques(world, applied);
+    jointAccelerationRows(world, applied, ctx.step_s, false, joint_rows, joint_b);
+  }
+  auto solve = [&](const lcp::LcpProblem& p) {
+    if (joint_rows.empty()) return solveContactLcp(p, ctx.stats);
+    lcp::LcpResult joined = solveContactLcp(withJointRows(world, p, lcp.rows, joint_rows, joint_b), ctx.stats);
+    joined.f.conservativeResize(p.size());
+    joined.w.conservativeResize(p.size());
+    return joined;
+  };
   lcp.problem.b = b;
-  lcp::LcpResult r = solveContactLcp(lcp.problem, ctx.stats);
+  lcp::LcpResult r = solve(lcp.problem);
   if (!usableLcpAnswer(r, lcp.problem)) {
     solveStoppedShort(ctx, resting);
     return;
@@ -330,7 +367,7 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     slide.g = next;
     if (change <= tuning::kDynamicFrictionSettled * (1 + slide.g.cwiseAbs().maxCoeff())) break;
     lcp.problem.b = b + coupling * slide.g;
-    r = solveContactLcp(lcp.problem, ctx.stats);
+    r = solve(lcp.problem);
     if (!usableLcpAnswer(r, lcp.problem)) {
       solveStoppedShort(ctx, resting);
       return;

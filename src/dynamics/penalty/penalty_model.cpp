@@ -293,6 +293,12 @@ void PenaltyModel::refuse(const World& world, const StepSettings& settings, doub
   throw Error(ExitCode::Software, message);
 }
 
+void PenaltyModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
+  if (!world.joints.empty())
+    throw Error(ExitCode::BadInput, "the penalty contact model does not simulate joints; use \"baraff\" or "
+                                    "\"time_stepping\" for a scene with joints");
+}
+
 void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
   const double dt = settings.dt;
   if (shared.has_contacts) {

@@ -34,6 +34,10 @@ namespace tumble {
 
 class PenaltyModel final : public ContactModelStep {
  public:
+  // Refuses a world with joints (exit 65): the model has no rows to hold them, and stiff springs in
+  // their place would set its sub-step by the joints' stiffness (the scene loader refuses such a
+  // scene first, pointing at "joints").
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
   double storedEnergy() const override { return stored_energy_; }

@@ -6,6 +6,8 @@
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_rows.h"
 #include "dynamics/island_impulses.h"
+#include "dynamics/joints/contact_joint_lcp.h"
+#include "dynamics/joints/joint_impulses.h"
 
 namespace tumble {
 namespace {
@@ -51,46 +53,69 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   auto rowVelocityNow = [&](const ContactRow& r) {
     return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
   };
-  // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
-  // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
-  std::vector<const ImpulseRecord*> island_last;
-  for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
-    // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
-    // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
-    // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
-    // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
-    const ContactRows rows = buildContactRows(world, island);
-    const int n = rows.size();
-    island_last.assign(island.size(), nullptr);
-    Eigen::VectorXd b(n);
-    for (int r = 0; r < n; ++r) b[r] = rowVelocityNow(rows.rows[r]);
-    for (std::size_t k = 0; k < island.size(); ++k) {
-      const std::size_t i = static_cast<std::size_t>(island[k] - contacts.data());
-      b[rows.normal_row[k]] -= want[i];
-      island_last[k] = last[i];
-    }
-    // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
-    const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
-    IslandImpulseSettings gs;
-    gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
-                          : settings.time_stepping_sweeps;
-    gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
-    gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
-    IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, stats);
-    Eigen::VectorXd f = std::move(solved.p);
-    if (!solved.converged && small) {
-      ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
-      exact.problem.b = b;
-      lcp::LcpResult r = solveContactLcp(exact.problem, stats);
-      if (usableLcpAnswer(r, exact.problem)) f = r.f;
-      else ++stats.iterative_fallbacks;
-    }
+  // The impulses of one set of contacts (an island, or all of them) along their rows: applied, and
+  // kept per contact for the records.
+  auto store = [&](const std::vector<const Contact*>& set, const ContactRows& rows, const Eigen::VectorXd& f) {
     applyAlongRows(world, rows.rows, f);
-    const std::vector<Eigen::Vector3d> island_impulse = impulsePerContact(rows, f, 1.0);
-    for (std::size_t k = 0; k < island.size(); ++k) {
-      const std::size_t i = static_cast<std::size_t>(island[k] - contacts.data());
-      impulse[i] += island_impulse[k];
+    const std::vector<Eigen::Vector3d> set_impulse = impulsePerContact(rows, f, 1.0);
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      const std::size_t i = static_cast<std::size_t>(set[k] - contacts.data());
+      impulse[i] += set_impulse[k];
       normal_impulse[i] = f[rows.normal_row[k]];
+    }
+  };
+  // The b of a set's rows: each row's velocity now, less its contact's normal target.
+  auto velocityTerms = [&](const std::vector<const Contact*>& set, const ContactRows& rows) {
+    Eigen::VectorXd b(rows.size());
+    for (int r = 0; r < rows.size(); ++r) b[r] = rowVelocityNow(rows.rows[r]);
+    for (std::size_t k = 0; k < set.size(); ++k)
+      b[rows.normal_row[k]] -= want[static_cast<std::size_t>(set[k] - contacts.data())];
+    return b;
+  };
+  if (!world.joints.empty()) {
+    // Joints tie the islands together and push on the contacts: every contact and every joint row
+    // in one problem (joints/contact_joint_lcp.h).
+    ContactLcp exact = buildContactLcp(world, all, std::vector<char>(m, 1));
+    exact.problem.b = velocityTerms(all, exact);
+    std::vector<JointRow> joint_rows;
+    Eigen::VectorXd joint_b;
+    jointStepRows(world, dt, joint_rows, joint_b);
+    ContactJointSettings joined;
+    joined.max_direct_rows = settings.contact.max_direct_rows;
+    joined.max_sweeps = settings.time_stepping_sweeps;
+    joined.contact_start = warmStart(exact, last);
+    store(all, exact, solveContactsWithJoints(world, exact, joint_rows, joint_b, joined, stats));
+  } else {
+    // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
+    // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
+    std::vector<const ImpulseRecord*> island_last;
+    for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
+      // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
+      // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
+      // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
+      // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
+      const ContactRows rows = buildContactRows(world, island);
+      island_last.assign(island.size(), nullptr);
+      const Eigen::VectorXd b = velocityTerms(island, rows);
+      for (std::size_t k = 0; k < island.size(); ++k)
+        island_last[k] = last[static_cast<std::size_t>(island[k] - contacts.data())];
+      // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
+      const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
+      IslandImpulseSettings gs;
+      gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
+                            : settings.time_stepping_sweeps;
+      gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
+      gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
+      IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, stats);
+      Eigen::VectorXd f = std::move(solved.p);
+      if (!solved.converged && small) {
+        ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
+        exact.problem.b = b;
+        lcp::LcpResult r = solveContactLcp(exact.problem, stats);
+        if (usableLcpAnswer(r, exact.problem)) f = r.f;
+        else ++stats.iterative_fallbacks;
+      }
+      store(island, rows, f);
     }
   }
 

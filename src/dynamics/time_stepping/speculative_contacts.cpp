@@ -63,7 +63,8 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
   for (std::size_t i = 0; i < found; ++i) {
     const PiecePair pair = pairs[i];
     if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;   // each pair of pieces once
-    const Contact& first = contacts[i];
+    // A copy: the push_back below may move the contacts, and `first` is read after it.
+    const Contact first = contacts[i];
     const CollisionHull& ha = detector.hull(pair.piece_a);
     const CollisionHull& hb = detector.hull(pair.piece_b);
     const FreeMotion ma = freeMotion(world, world.bodies[first.a], dt, gravity);

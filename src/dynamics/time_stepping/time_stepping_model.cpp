@@ -2,6 +2,9 @@
 
 #include "dynamics/contact_rows.h"
 #include "dynamics/gravity.h"
+#include "dynamics/joints/joint_impulses.h"
+#include "dynamics/joints/joint_projection.h"
+#include "dynamics/joints/joint_summary.h"
 #include "dynamics/time_stepping/speculative_contacts.h"
 
 namespace tumble {
@@ -37,8 +40,25 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
       impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
     });
   }
+  // The joints' impulses: with the contacts', in one problem (contact_impulses.h); alone where
+  // nothing can touch (joints/joint_impulses.h).
+  if (!world.joints.empty() && !shared.has_contacts) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });
   for (Wrench& w : shared.wrenches) w = Wrench{};
-  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings); });
+  shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings, false); });
+  // Free motion with joints still follows them (their forces at every integrator stage hold the
+  // centripetal pull); what drift is left is projected out, positions only (joint_projection.h).
+  if (!world.joints.empty())
+    shared.timed(Correct, [&] {
+      if (projectJointPositions(world).passes > 0) shared.contacts_fresh = false;
+    });
+}
+
+void TimeSteppingModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
+  if (!world.joints.empty())
+    joints_line_ = "joints      " + describeJoints(world) +
+                   ": velocity-level impulses in one pivoted problem with the contacts' (equality rows, limits "
+                   "that may close within the step, velocity motors bounded by torque x dt), forces at every "
+                   "integrator stage, position drift projected";
 }
 
 std::vector<std::string> TimeSteppingModel::describe(const StepSettings& settings, const SharedStages& shared) const {
@@ -55,6 +75,7 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
                     " sweeps; " + (settings.contact.max_direct_rows > 0
                                        ? "small islands it leaves unconverged pivoted exactly"
                                        : "every island by Gauss-Seidel alone"));
+  if (!joints_line_.empty()) lines.push_back(joints_line_);
   lines.push_back(shared.integrateLine(settings) + " (free motion with the new momenta)");
   if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
   return lines;

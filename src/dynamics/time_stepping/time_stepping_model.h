@@ -4,9 +4,11 @@
 //   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
 //   correct     project out residual penetration                          drift_projection.h
 //   forces      gravity as an impulse                                     gravity.h
-//   resting     the contact impulses (restitution, friction pyramid)      contact_impulses.h
+//   resting     the contact impulses (restitution, friction pyramid),     contact_impulses.h
+//               with a world's joints in the same problem                 joints/contact_joint_lcp.h
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
+//   joints      their position drift projected out                         joints/joint_projection.h
 #pragma once
 
 #include <vector>
@@ -19,6 +21,7 @@ namespace tumble {
 
 class TimeSteppingModel final : public ContactModelStep {
  public:
+  void start(const World& world, const StepSettings& settings, SharedStages& shared) override;
   void step(World& world, const StepSettings& settings, SharedStages& shared) override;
   std::vector<std::string> describe(const StepSettings& settings, const SharedStages& shared) const override;
   StepImpulses lastImpulses() const override { return {&impulses_.memory(), last_dt_}; }
@@ -29,6 +32,7 @@ class TimeSteppingModel final : public ContactModelStep {
   DriftProjection projection_;
   std::vector<double> reach_;      // how far each body can travel in the step
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
+  std::string joints_line_;        // for `tumble check`; empty without joints
 };
 
 }  // namespace tumble
