@@ -206,6 +206,7 @@ void prepareComparison(Scene& scene, const std::vector<ContactModel>& models) {
     Scene copy = scene;
     setContactModel(copy, m, "--compare-models");   // a model the scene's settings rule out: 64, now
   }
+  layoutFor(scene.render.width, scene.render.height, static_cast<int>(models.size()));   // too small: 64, now
   scene.overlays = OverlaySpec{};
 }
 

@@ -29,8 +29,9 @@ void addCompareOptions(CLI::App& render, CompareOptions& options);
 std::vector<ContactModel> parseCompareModels(const CompareOptions& options,
                                              const std::vector<std::pair<std::string, bool>>& given);
 
-// After the scene is read: each model must suit the scene (setContactModel's checks), and the
-// scene's own overlays are left out (the tiles carry their own labels).
+// After the scene is read: each model must suit the scene (setContactModel's checks) and the frame
+// must be large enough to tile; the scene's own overlays are left out (the tiles carry their own
+// labels).
 void prepareComparison(Scene& scene, const std::vector<ContactModel>& models);
 
 // What the frames' provenance hashes beside the camera (frame_provenance.h), so that a comparison's
