@@ -92,6 +92,12 @@ OverlayPanel hudPanel(const HudFigures& h, int frame_height) {
   return panel(rows, overlayFontPx(frame_height), frame_height, false);
 }
 
+OverlayPanel textPanel(const std::vector<std::string>& lines, double font_px, int frame_height, bool from_bottom) {
+  std::vector<Row> rows;
+  for (const std::string& l : lines) rows.push_back({l});
+  return panel(rows, font_px, frame_height, from_bottom);
+}
+
 std::optional<OverlayPanel> legendPanel(const OverlaySpec& spec, const OverlayScales& s, int frame_height) {
   using namespace overlay_colour;
   std::vector<Row> rows;

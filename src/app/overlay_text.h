@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/overlay_marks.h"
 #include "base/image.h"
@@ -32,6 +33,9 @@ struct OverlayPanel {
 // Text size for a frame this tall (px): 18 px text at 720 rows, never under 8.
 double overlayFontPx(int frame_height);
 OverlayPanel hudPanel(const HudFigures& hud, int frame_height);
+// Lines of text on the same panel, `font_px` tall, in the top-left corner of a picture this tall
+// (or the bottom-left one, `from_bottom`): the tiles' labels of render --compare-models.
+OverlayPanel textPanel(const std::vector<std::string>& lines, double font_px, int frame_height, bool from_bottom);
 // What the marks of `spec` mean, with the clip's scales; none when no marks are drawn.
 std::optional<OverlayPanel> legendPanel(const OverlaySpec& spec, const OverlayScales& scales, int frame_height);
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/camera_rig.h"
+#include "app/compare_models.h"
 #include "app/commands.h"
 #include "app/frame_check.h"
 #include "app/frame_provenance.h"
@@ -44,6 +45,7 @@ struct RenderOptions {
   std::vector<std::string> overlays;   // --overlay, beside the scene's "overlays"
   ShardRequest shard;
   CheckOptions check;
+  CompareOptions compare;   // --compare-models: each model in a tile of its own (compare_models.h)
 };
 
 // Wall time of each phase, for the closing summary.
@@ -140,17 +142,25 @@ const char* modelName(ContactModel m) {
 }
 
 int run(const RenderOptions& o) {
+  const std::vector<ContactModel> compared = parseCompareModels(
+      o.compare, {{"--from-trajectory", !o.from_trajectory.empty()}, {"--shard", !o.shard.shard.empty()},
+                  {"--shards", o.shard.shards.has_value()}, {"--shards-env", !o.shard.shards_env.empty()},
+                  {"--contact-model", !o.scene.contact_model.empty()}, {"--overlay", !o.overlays.empty()},
+                  {"--check-against", !o.check_against.empty()}, {"--stats", !o.stats.empty()},
+                  {"--dry-run", o.dry_run}});
   if (!o.check_against.empty() && !std::filesystem::is_directory(o.check_against)) {
     std::fprintf(stderr, "tumble: --check-against: %s is not a folder of frames\n", o.check_against.c_str());
     return static_cast<int>(CheckExit::BadInput);   // comparisons answer 2 for bad input, as diff does
   }
   Scene scene = loadSceneWithOverrides(o.scene);
   applyRenderOverrides(o, scene);
+  if (!compared.empty()) prepareComparison(scene, compared);
   const CameraSpec& camera = pickCamera(scene, o.camera);
   OverlayRender overlays(scene, resolveOverlays(scene.overlays, o.overlays));
   overlays.checkMotionSource(!o.from_trajectory.empty());
   std::vector<int> frames = selectFrames(scene.render.frames, o.start, o.end, o.frames);
-  std::optional<Shard> shard = chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv);
+  std::optional<Shard> shard =   // a comparison renders whole: a job array's variables are not read
+      compared.empty() ? chooseShard(o.shard, !o.frames.empty() || o.start || o.end, std::getenv) : std::nullopt;
   if (shard) frames = shardFrames(frames, *shard);
   std::string output = !o.output.empty() ? o.output : scene.output.value_or("out/" + scene.name + ".mp4");
   OutputTarget target = parseOutput(output, static_cast<int>(frames.size()));
@@ -168,8 +178,13 @@ int run(const RenderOptions& o) {
     return 0;
   }
   SinkOptions sink_options{scene.render.width, scene.render.height, scene.render.fps,
-                           scene.render.crf, o.overwrite, o.skip_existing, frameProvenance(scene, o.camera)};
+                           scene.render.crf, o.overwrite, o.skip_existing,
+                           frameProvenance(scene, o.camera + comparisonSettings(compared))};
   std::unique_ptr<FrameSink> sink = makeFrameSink(target, sink_options);
+  if (!compared.empty())
+    return renderComparison(compared, o.compare,
+                            {scene, camera, frames, target, std::move(sink), o.shaders, o.scene.quiet,
+                             o.scene.verbose, o.scene.keep_going});
   std::optional<CheckReport> check;
   if (!o.check_against.empty()) check.emplace(o.check.settings, false);
 
@@ -323,6 +338,7 @@ std::function<int()> addRenderCommand(CLI::App& app) {
   addCheckOptions(*cmd, o->check);
   addScaleOutOptions(*cmd, o->from_trajectory, o->shard);
   addOverlayOption(*cmd, o->overlays);
+  addCompareOptions(*cmd, o->compare);
   return [o] { return run(*o); };
 }
 
