@@ -14,7 +14,7 @@
 #include "base/error.h"
 #include "dynamics/frame_record.h"
 #include "dynamics/simulator.h"
-#include "io/video_sink.h"
+#include "io/make_frame_sink.h"
 #include "render/overlay_composite.h"
 #include "render/renderer.h"
 #include "scene/scene_overrides.h"
@@ -246,11 +246,11 @@ int renderComparison(const std::vector<ContactModel>& models, const CompareOptio
   all.times = runs.front().trajectory.times;
   all.frames.resize(all.times.size());
   std::vector<double> radii;
+  const std::vector<double> body_radii = bodyRadii(drawing);   // the same bodies in every run
   for (const ModelRun& r : runs) {
     all.body_names.insert(all.body_names.end(), r.trajectory.body_names.begin(), r.trajectory.body_names.end());
     for (std::size_t k = 0; k < all.frames.size(); ++k)
       all.frames[k].insert(all.frames[k].end(), r.trajectory.frames[k].begin(), r.trajectory.frames[k].end());
-    const std::vector<double> body_radii = bodyRadii(drawing);
     radii.insert(radii.end(), body_radii.begin(), body_radii.end());
   }
   const std::vector<DrawCamera> cameras =
@@ -295,13 +295,7 @@ int renderComparison(const std::vector<ContactModel>& models, const CompareOptio
     progress.update(++done);
   }
   const bool interrupted = done < static_cast<int>(job.frames.size());
-  std::string written = job.sink->describe();
-  if (interrupted && job.target.kind == OutputTarget::Kind::Video) {
-    job.sink.reset();   // finalised, playable, under a ".partial" name
-    written = VideoSink::partialPath(job.target.path).string();
-  } else {
-    job.sink->finish();
-  }
+  const std::string written = finishFrameSink(job.sink, job.target, interrupted);
   progress.finish();
   const double wall = secondsSince(total_start);
   if (!job.quiet || interrupted) {

@@ -27,7 +27,6 @@
 #include "io/atomic_file.h"
 #include "io/make_frame_sink.h"
 #include "io/output_path.h"
-#include "io/video_sink.h"
 #include "render/renderer.h"
 #include "scene/scene_overrides.h"
 
@@ -265,15 +264,8 @@ int run(const RenderOptions& o) {
     progress.update(++done);
   }
   bool interrupted = done < static_cast<int>(frames.size());
-  std::string written = sink->describe();
   start = std::chrono::steady_clock::now();
-  if (interrupted && target.kind == OutputTarget::Kind::Video) {
-    // An interrupted video is finalised (playable) under a ".partial" name, never the final one.
-    sink.reset();
-    written = VideoSink::partialPath(target.path).string();
-  } else {
-    sink->finish();
-  }
+  const std::string written = finishFrameSink(sink, target, interrupted);
   times.encode += secondsSince(start);
   progress.finish();
   if (!interrupted) overlays.writePlots(trajectory, o.overwrite, o.scene.quiet);

@@ -29,6 +29,16 @@ std::unique_ptr<FrameSink> makeFrameSink(const OutputTarget& target, const SinkO
   return std::make_unique<VideoSink>(target, settings, options.overwrite);
 }
 
+std::string finishFrameSink(std::unique_ptr<FrameSink>& sink, const OutputTarget& target, bool interrupted) {
+  std::string written = sink->describe();
+  if (interrupted && target.kind == OutputTarget::Kind::Video) {
+    sink.reset();
+    return VideoSink::partialPath(target.path).string();
+  }
+  sink->finish();
+  return written;
+}
+
 std::unique_ptr<FrameSink> makeNullSink() { return std::make_unique<NullSink>(); }
 
 }  // namespace tumble

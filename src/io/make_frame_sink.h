@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "io/frame_sink.h"
 #include "io/output_path.h"
@@ -20,6 +21,10 @@ struct SinkOptions {
 };
 
 std::unique_ptr<FrameSink> makeFrameSink(const OutputTarget& target, const SinkOptions& options);
+
+// Ends a render's output and says where it went: finished as asked, or, when the render was
+// interrupted, a video finalised (playable) under its ".partial" name, never the final one.
+std::string finishFrameSink(std::unique_ptr<FrameSink>& sink, const OutputTarget& target, bool interrupted);
 
 // A sink that discards frames, for timing the renderer or simulating without output.
 std::unique_ptr<FrameSink> makeNullSink();
