@@ -14,14 +14,14 @@ void printPipelineStats(const Pipeline& pipeline) {
   const PipelineCounters& c = pipeline.counters();
   std::fprintf(stderr,
                "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld (%ld past a body's reach, "
-               "not made), unresolved %ld, impacts too deep to go back for %ld\n",
+               "not made), unresolved %ld, impacts too deep to go back for %ld, contact work taken back %ld\n",
                c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.capped_projections,
-               c.stuck_substeps, c.inconsistent_pairs);
+               c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid);
   std::fprintf(stderr,
                "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld, "
-               "dynamic-friction fallbacks %ld\n",
+               "dynamic-friction fallbacks %ld, impacts grown by their neighbours %ld\n",
                c.contacts.colliding, c.contacts.resting, c.contacts.pivots, c.contacts.failures,
-               c.contacts.friction_fallbacks);
+               c.contacts.friction_fallbacks, c.contacts.merged_impacts);
   std::fprintf(stderr,
                "  resting islands solved by Gauss-Seidel %ld (%ld after pivoting stopped short; "
                "%ld sweeps, %ld subspace steps, %ld solves left unconverged)\n",

@@ -18,6 +18,7 @@ struct ContactSolveStats {
   long iterative_fallbacks = 0;     // of those: pivoting stopped short with unusable forces
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
   long active_set_steps = 0;        // subspace steps on islands Gauss-Seidel left unconverged
+  long merged_impacts = 0;          // pair impacts grown by neighbours that turned their lift-off back
 };
 
 // A bounce slower than what gravity takes away in about two steps cannot leave the surface for a

@@ -31,6 +31,7 @@ struct PipelineCounters {
   long projections = 0;
   long bodies_integrated = 0;    // body advances over dt or a sub-step (trial ones too): static bodies never
   long capped_projections = 0;   // Baraff model: corrections not made, a body's reach for the step spent
+  long contact_work_paid = 0;    // sub-steps whose contact forces did positive work, taken back
   long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
   ContactSolveStats contacts;
   std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied

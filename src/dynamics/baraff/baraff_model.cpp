@@ -80,6 +80,9 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     for (std::size_t i = 0; i < shared.contacts.size(); ++i)
       lifting_[i] = normalVelocity(world, shared.contacts[i]) > settings.contact.resting_speed_m_s;
   }
+  // Contact forces may not do positive work (contact_work_bound.h); only where nothing drives.
+  const bool bound_work = shared.has_contacts && world.joints.empty();
+  if (bound_work) work_bound_.before(world, shared.contacts, settings.contact.tolerance_m, shared.extents);
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub); });
   if (!shared.has_contacts) {
     correctJoints(world, shared);
@@ -94,6 +97,7 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     shared.timed(BackStep, [&] {
       taken = back_step_.firstContact(world, settings, h, {contacts_end_, pairs_end_, lifting_, start_state_}, shared);
     });
+  if (bound_work) counters.contact_work_paid += work_bound_.after(world);
   if (taken == h) {
     std::swap(shared.contacts, contacts_end_);
     std::swap(shared.pairs, pairs_end_);

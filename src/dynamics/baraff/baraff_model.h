@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "dynamics/baraff/back_step.h"
+#include "dynamics/baraff/contact_work_bound.h"
 #include "dynamics/baraff/drift_correction.h"
 #include "dynamics/baraff/resting_forces.h"
 #include "dynamics/baraff/tunnelling_bound.h"
@@ -47,6 +48,7 @@ class BaraffModel final : public ContactModelStep {
   TunnellingBound tunnelling_;
   BackStepper back_step_;
   DriftCorrection correction_;
+  ContactWorkBound work_bound_;
   BodySnapshot start_state_;       // the state at the sub-step's start, for back-stepping
   std::vector<Contact> contacts_end_;
   std::vector<PiecePair> pairs_end_;

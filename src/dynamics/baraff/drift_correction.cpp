@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "dynamics/baraff/energy_payment.h"
 #include "dynamics/contact_islands.h"
 #include "dynamics/position_projection.h"
 
@@ -15,12 +16,6 @@ struct Pose {
   Eigen::Vector3d x;
   Eigen::Quaterniond q;
 };
-
-// A body's kinetic plus gravitational energy (J, zero of potential at the origin).
-double energyOf(const World& world, int body) {
-  const RigidBody& b = world.bodies[body];
-  return b.is_static ? 0.0 : b.kineticEnergy() - b.mass * world.gravity.dot(b.x);
-}
 
 // A projection moves positions only, and may still raise the pair's energy: a lift adds potential
 // energy, a turn changes the kinetic energy of the same angular momentum. Drift that took energy
@@ -35,25 +30,12 @@ double energyOf(const World& world, int body) {
 // passes lifting it out of the ground added 19 J in one step (the ball rolling on top had 1500 J).
 // The price: where a resting body's drift took the energy its lift returns, and bodies moving
 // against it pay for the lift anyway, the island loses m g times the drift (microjoules for a
-// drift of the contact tolerance); a passive scene never gains energy this way.
-double payFrom(World& world, const std::vector<int>& bodies, double gain) {
-  double kinetic = 0;
-  for (int body : bodies)
-    if (!world.bodies[body].is_static) kinetic += world.bodies[body].kineticEnergy();
-  if (!(kinetic > 0)) return gain;
-  const double scale = std::sqrt(std::max(0.0, 1 - gain / kinetic));
-  for (int body : bodies)
-    if (!world.bodies[body].is_static) {
-      world.bodies[body].P *= scale;
-      world.bodies[body].L *= scale;
-    }
-  return std::max(0.0, gain - kinetic);
-}
-
+// drift of the contact tolerance); a passive scene never gains energy this way (energy_payment.h).
+//
 // `island_of` gives the moving bodies touching a body (found only when the pair cannot pay).
 template <typename IslandOf>
 void payForProjection(World& world, int a, int b, double energy_before, IslandOf&& island_of) {
-  const double gain = energyOf(world, a) + energyOf(world, b) - energy_before;
+  const double gain = mechanicalEnergy(world, a) + mechanicalEnergy(world, b) - energy_before;
   if (!(gain > 0)) return;
   const double left = payFrom(world, {a, b}, gain);
   if (!(left > 0)) return;
@@ -131,7 +113,7 @@ CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact
     for (std::size_t k = begin; k < end; ++k) points.push_back(&contacts[grouped.order[k]]);
     const int a = points.front()->a, b = points.front()->b;
     const Pose before_a{world.bodies[a].x, world.bodies[a].q}, before_b{world.bodies[b].x, world.bodies[b].q};
-    const double energy_before = energyOf(world, a) + energyOf(world, b);
+    const double energy_before = mechanicalEnergy(world, a) + mechanicalEnergy(world, b);
     if (!projectPair(world, points, tol, extents)) continue;
     const double moved_a = pointsMoved(before_a, world.bodies[a], extents[a].radius);
     const double moved_b = pointsMoved(before_b, world.bodies[b], extents[b].radius);

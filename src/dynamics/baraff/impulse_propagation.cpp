@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "dynamics/baraff/impact_energy.h"
+#include "dynamics/baraff/neighbour_turn_back.h"
 #include "dynamics/baraff/restitution_laws.h"
 #include "dynamics/contact_jacobian.h"
 #include "dynamics/contact_rows.h"
@@ -212,7 +213,8 @@ void plasticImpact(World& world, const std::vector<const Contact*>& island, cons
 
 }  // namespace
 
-void propagateImpulses(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
+void propagateImpulses(World& world, const std::vector<const Contact*>& island,
+                       const std::vector<const Contact*>& outside, const ContactSettings& s,
                        double min_bounce_speed, double dt, ContactSolveStats& stats) {
   const SettleRule settle = settleRule(s, dt);
   // Pair by pair is how an elastic impact travels (a cradle's balls leave one after another). An
@@ -231,16 +233,24 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island, 
   // are capped so a pinched body cannot bounce for ever; inelastic rounds converge like
   // Gauss-Seidel on the inelastic impulse LCP, and the cap only stops a slow one.
   const int elastic_rounds = 4 * n + 4, max_rounds = 16 * n + 16;
+  const ContactNeighbours neighbours(world, island, outside);
   for (int round = 0; round < max_rounds; ++round) {
     // The pair approaching fastest (first in island order on ties: deterministic).
     int k = 0;
     for (int i = 1; i < n; ++i)
       if (pairs[i].approach < pairs[k].approach) k = i;
     if (pairs[k].approach >= -s.resting_speed_m_s) return;
-    resolveImpact(world, pairs[k].points, min_bounce_speed, round < elastic_rounds ? 1.0 : 0.0, s.restitution_law,
-                  stats, &settle);
+    // An elastic pair impact whose lift-off a neighbour would turn back at once takes that
+    // neighbour in (neighbour_turn_back.h); an inelastic one lifts nothing off.
+    const long merged = stats.merged_impacts;
+    if (round < elastic_rounds)
+      resolveImpactWithNeighbours(world, pairs[k].points, neighbours.around(world, pairs[k].points), s,
+                                  min_bounce_speed, 1.0, settle, stats);
+    else
+      resolveImpact(world, pairs[k].points, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
+    // A grown impact moved bodies beyond the pair's.
     for (PairImpact& p : pairs)
-      if (sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
+      if (stats.merged_impacts != merged || sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.

@@ -50,8 +50,10 @@ inline SettleRule settleRule(const ContactSettings& s, double dt) { return {4 * 
 // afterwards no contact approaches faster than settings.resting_speed_m_s. Impacts slower than
 // `min_bounce_speed` (m/s) get no restitution (see Pipeline); lift-offs too short for a step of
 // `dt` to follow settle (settleRule).
+// `outside`: the contacts not in any island (touching and separating, or within the margin), which
+// an elastic pair impact may have to take in (neighbour_turn_back.h).
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
-                       const ContactSettings& settings, double min_bounce_speed, double dt,
+                       const std::vector<const Contact*>& outside, const ContactSettings& settings, double min_bounce_speed, double dt,
                        ContactSolveStats& stats);
 
 // One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every

@@ -298,13 +298,21 @@ void solveStoppedShort(const RestingContext& ctx, const std::vector<const Contac
 // often (the statics of a ring of redundant face contacts are indeterminate): restarted from zero
 // at every sub-step, Gauss-Seidel on the accelerations left the 25-stone arch sinking 0.29 m in
 // its first second; warm-started at the velocity level, 1 cm.
-void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting) {
+//
+// Whether a slide is slow enough for friction to stop within the step is first judged from the
+// contact's free normal acceleration (slides()); that misses the load other bodies put on it: a
+// light plate pinched under a heavy block has no free normal acceleration against it, yet the
+// block's weight presses it, and dynamic friction of hundreds of newtons held over the step on an
+// 80 g plate reversed its slip and spun it at rad/s. So once the forces are known, a slide that its
+// own dynamic friction would stop within the step is held by static friction, and the island is
+// solved again (once: `stuck` lists the contacts so held).
+void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting, const std::vector<char>* stuck = nullptr) {
   const World& world = ctx.world;
   std::vector<char> sticks(resting.size(), 0);
   SlideForces slide;
   for (std::size_t i = 0; i < resting.size(); ++i) {
     Eigen::Vector3d vt = tangentialVelocity(world, *resting[i]);
-    bool sliding = slides(ctx, *resting[i], vt);
+    bool sliding = !(stuck && (*stuck)[i]) && slides(ctx, *resting[i], vt);
     sticks[i] = !sliding;
     if (sliding && resting[i]->friction > 0) {
       slide.rows.push_back(slideRow(world, *resting[i], -vt.normalized()));
@@ -370,6 +378,29 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     r = solve(lcp.problem);
     if (!usableLcpAnswer(r, lcp.problem)) {
       solveStoppedShort(ctx, resting);
+      return;
+    }
+  }
+  if (!stuck && m > 0 && ctx.step_s > 0) {
+    auto samePair = [](const Contact& x, const Contact& y) {
+      return (x.a == y.a && x.b == y.b) || (x.a == y.b && x.b == y.a);
+    };
+    std::vector<char> held(resting.size(), 0);
+    bool any = false;
+    for (int k = 0; k < m; ++k) {
+      const Contact& c = *resting[slide.contact[k]];
+      const Eigen::Vector3d vt = tangentialVelocity(world, c);
+      const double speed = vt.norm();
+      if (speed > 0 && speed <= slide.g[k] * rowMobility(world, c, vt / speed) * ctx.step_s)
+        any = held[slide.contact[k]] = 1;
+    }
+    // A face slides as one: its corners, held one by one, would stop unequally and turn it.
+    for (int k = 0; k < m && any; ++k)
+      for (int j = 0; j < m; ++j)
+        if (held[slide.contact[j]] && samePair(*resting[slide.contact[k]], *resting[slide.contact[j]]))
+          held[slide.contact[k]] = 1;
+    if (any) {
+      pivot(ctx, resting, &held);
       return;
     }
   }
