@@ -8,7 +8,11 @@
 #include <cstdlib>
 
 #include "base/error.h"
+#include "dynamics/baraff/resting_forces.h"
+#include "dynamics/contact_detection.h"
+#include "dynamics/gravity.h"
 #include "dynamics/joints/joint.h"
+#include "dynamics/joints/joint_projection.h"
 #include "joint_worlds.h"
 
 using namespace tumble;
@@ -46,6 +50,29 @@ BodySpec motorPlate() {
   return plate;
 }
 const double kPlateInertia = (0.4 * 0.4 + 0.4 * 0.4) / 12;   // kg m^2 about z: m (a^2 + b^2) / 12
+
+// A capsule rod hinged to the world at height H by its upper end, its lower end lying on the
+// ground (friction mu, the rod's and the ground's): the end's circle about the hinge runs into the
+// ground, so the hinge and the ground share the rod's weight and it stays.
+JointRun rodHingedOverGround(ContactModel model, double mu) {
+  BodySpec ground;
+  ground.name = "ground";
+  ground.shape = ShapeKind::Plane;
+  ground.is_static = true;
+  ground.friction = mu;
+  const double H = 0.1, r = 0.01, length = 0.3;
+  const Eigen::Vector3d hinge(0, 0, H), end(std::sqrt(length * length - (H - r) * (H - r)), 0, r);
+  BodySpec rod;
+  rod.name = "rod";
+  rod.shape = ShapeKind::Capsule;
+  rod.radius_m = r;
+  rod.capsule_length_m = length;
+  rod.mass_kg = 0.2;
+  rod.friction = mu;
+  rod.orientation = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), (end - hinge).normalized());
+  rod.position_m = (hinge + end) / 2;
+  return makeRun({ground, rod}, {joint(JointType::Hinge, "world", "rod", hinge)}, model);
+}
 
 }  // namespace
 
@@ -234,27 +261,9 @@ TEST_CASE("a rod hinged above the ground with its free end on it rests: contacts
   const ContactModel model = GENERATE(ContactModel::Baraff, ContactModel::TimeStepping);
   // Time stepping with pivoting off ("pivoting_max_rows": 0) sweeps the same rows by Gauss-Seidel.
   const int pivoting_max_rows = GENERATE(256, 0);
-  // A capsule rod hinged to the world at height H by its upper end, its lower end lying on the
-  // frictionless ground: the end's circle about the hinge runs into the ground, so the hinge and
-  // the ground share the rod's weight and it stays. Solved apart, the contact pushes a free rod
-  // and the joint then pulls it back along its circle: the end creeps along the ground.
-  BodySpec ground;
-  ground.name = "ground";
-  ground.shape = ShapeKind::Plane;
-  ground.is_static = true;
-  ground.friction = 0;
-  const double H = 0.1, r = 0.01, length = 0.3;
-  const Eigen::Vector3d hinge(0, 0, H), end(std::sqrt(length * length - (H - r) * (H - r)), 0, r);
-  BodySpec rod;
-  rod.name = "rod";
-  rod.shape = ShapeKind::Capsule;
-  rod.radius_m = r;
-  rod.capsule_length_m = length;
-  rod.mass_kg = 0.2;
-  rod.friction = 0;
-  rod.orientation = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), (end - hinge).normalized());
-  rod.position_m = (hinge + end) / 2;
-  JointRun run = makeRun({ground, rod}, {joint(JointType::Hinge, "world", "rod", hinge)}, model);
+  // The rod of rodHingedOverGround on the frictionless ground. Solved apart, the contact pushes a
+  // free rod and the joint then pulls it back along its circle: the end creeps along the ground.
+  JointRun run = rodHingedOverGround(model, 0);
   run.step.contact.max_direct_rows = pivoting_max_rows;
   const Eigen::Vector3d start = run.built.world.bodies[1].x;
   double gap = 0, moved = 0;
@@ -268,6 +277,68 @@ TEST_CASE("a rod hinged above the ground with its free end on it rests: contacts
   // left out of the resting solve); pivoted together it stays to rounding, and swept together it
   // moves 3e-9 m: Gauss-Seidel stops at 1e-6 of the largest velocity term (kImpulseTolerance).
   CHECK(moved < (pivoting_max_rows > 0 ? 1e-12 : 1e-8));
+}
+
+TEST_CASE("a hinged rod on the ground rests under each of the Baraff model's resting solves", "[joints][fallbacks]") {
+  // resting_forces.h: Pivoting, and the fallbacks BoxedFriction (a sliding body whose dynamic
+  // friction diverges), AccelerationSweeps (pivoting stopped short without a memory) and
+  // VelocityLevel (an island too large to pivot). The first three are reached in a run only by
+  // islands that need them, so each is forced (RestingContext::forced) on the rod of
+  // rodHingedOverGround, on frictionless ground and with friction 0.5.
+  const RestingSolve forced = GENERATE(RestingSolve::Pivoting, RestingSolve::BoxedFriction,
+                                       RestingSolve::AccelerationSweeps, RestingSolve::VelocityLevel);
+  const double mu = GENERATE(0.0, 0.5);
+  JointRun run = rodHingedOverGround(ContactModel::Baraff, mu);
+  World& world = run.built.world;
+  const StepSettings& step = run.step;
+  // The Baraff model's sub-step, stage by stage, with the resting solve forced: detect, gravity,
+  // resting forces, integrate (the joints' forces at every RK4 stage), the joints' projection.
+  // Nothing collides here (the rod starts at rest on the ground), so neither impacts nor the
+  // contacts' projection are needed.
+  ContactDetector detector(world);
+  std::vector<Contact> contacts;
+  RestingMemory memory;
+  ContactSolveStats stats;
+  const Eigen::Vector3d start = world.bodies[1].x;
+  double gap = 0, moved = 0;
+  const long steps = std::lround(2 / step.dt);
+  for (long i = 0; i < steps; ++i) {
+    detector.detect(world, step.contact, contacts);
+    std::vector<Wrench> wrenches(world.bodies.size());
+    applyGravity(world, wrenches);
+    addRestingForces(contacts, {world, step.contact, step.dt, &memory, wrenches, stats, forced});
+    integrate(world, wrenches, step);
+    projectJointPositions(world);
+    removeJointVelocityError(world);
+    world.time = double(i + 1) * step.dt;
+    gap = std::max(gap, anchorGap(world, world.joints[0]));
+    moved = std::max(moved, (world.bodies[1].x - start).norm());
+  }
+  INFO("forced solve " << int(forced) << ", mu " << mu << ": largest joint gap " << gap << " m, largest move " << moved
+                       << " m, " << stats.unconverged_sweeps << " unconverged");
+  // The path was taken: BoxedFriction is counted as a friction fallback, the sweeps as iterative islands.
+  switch (forced) {
+    case RestingSolve::Pivoting: CHECK(stats.iterative_islands == 0); break;
+    case RestingSolve::BoxedFriction: CHECK(stats.friction_fallbacks == steps); break;
+    case RestingSolve::AccelerationSweeps:
+    case RestingSolve::VelocityLevel: CHECK(stats.iterative_islands == steps); break;
+  }
+  if (std::getenv("TUMBLE_PRINT_JOINT_FIGURES"))
+    std::printf("rod on the ground, forced solve %d, mu %.1f: gap %.3g m, move %.3g m\n", int(forced), mu, gap, moved);
+  // The joint holds whatever the contacts do (the integrator solves its forces at every stage and
+  // the projection removes drift), so the gap alone cannot tell; the rod's rest can. With the joint
+  // rows left out of BoxedFriction and AccelerationSweeps (as they were), the contact forces were
+  // a free rod's and it fell 0.286 m within the 2 s (gap 1.3e-12 m). Pivoted (BoxedFriction is
+  // pivoted too) it stays to rounding. Swept, Gauss-Seidel stops short: at the velocity level at
+  // 1e-6 of the largest velocity term (3e-9 m in 2 s), on the accelerations from zero at 1e-7 of
+  // the largest free acceleration (about g: 1e-6 m/s^2 left, at most 2e-6 m in 2 s; 8.6e-8 m).
+  CHECK(gap < 1e-6);
+  switch (forced) {
+    case RestingSolve::Pivoting:
+    case RestingSolve::BoxedFriction: CHECK(moved < 1e-12); break;
+    case RestingSolve::AccelerationSweeps: CHECK(moved < 1e-6); break;
+    case RestingSolve::VelocityLevel: CHECK(moved < 1e-8); break;
+  }
 }
 
 TEST_CASE("a body does not fall asleep while a body joined to it moves", "[joints]") {

@@ -214,3 +214,33 @@ TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short
     CHECK(stepWith(0, -g_dt, 0) == Approx(5).epsilon(1e-9));
   }
 }
+
+// The ten-link chain of scenes/demos/chain.json (dt 1/480 s) under time stepping, 4 s: the total
+// energy may never rise above the lowest it has reached by more than 1e-3 of the energy in play
+// (test::EnergyRise: the largest kinetic energy plus the potential's range, about 15 J here), the
+// run-time fault check's share (energy_check.h), since nothing in the scene adds energy: the
+// joints' impulses and projections only remove it, and what touches is inelastic.
+// Known failure (measured 2026-11-25): it rises 0.046 J, 3.0e-3 of the energy in play, by 0.87 s,
+// and the fault check trips at 0.54 s (`tumble simulate scenes/demos/chain.json --contact-model
+// time_stepping`). Not the contacts: with the links thinned to 5 mm (no link meets another) the rise
+// is the same, 3.0e-3. Not first-order error shrinking with the step either: 2.6e-2 at 1/960 s and
+// 6.1e-2 at 1/1920 s. The Baraff model keeps the same chain within 3.4e-4 (next test). Where it comes
+// from (the step's free motion with the joints' forces after their velocity-level impulses, or
+// the position projection's lift) is open.
+TEST_CASE("a chain under time stepping gains no energy above 1e-3 of the energy in play over 4 s (reached: 3.0e-3)",
+          "[time_stepping][joints][!shouldfail]") {
+  test::EnergyRise energy;
+  test::SceneRun run = test::runScene(
+      "demos/chain", 4, [&](const World& world) { energy.add(world); }, 1000000,
+      [](Scene& s) { s.simulation.step.model = ContactModel::TimeStepping; }, true);
+  INFO("largest rise " << energy.largest() << " of the energy in play; " << run.faults << " steps at fault");
+  CHECK(energy.largest() < 1e-3);
+}
+
+TEST_CASE("the same chain under the Baraff model gains no energy above 1e-3 of the energy in play over 4 s (reached: 3.4e-4)",
+          "[joints]") {
+  test::EnergyRise energy;
+  test::runScene("demos/chain", 4, [&](const World& world) { energy.add(world); }, 1000000);
+  INFO("largest rise " << energy.largest() << " of the energy in play");
+  CHECK(energy.largest() < 1e-3);
+}

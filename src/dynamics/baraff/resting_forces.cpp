@@ -53,6 +53,37 @@ void addForces(const World& world, const std::vector<ContactRow>& rows, const Ei
   }
 }
 
+// The joints' rows at the acceleration level, under the applied forces and the PD motors'
+// torques, for a resting solve to take with its contact rows (joints/contact_joint_lcp.h): a
+// resting body may hang from a joint (a chain lying on the ground), and its contact forces are
+// then those the joints allow. Velocity motors are left out (the integrator holds them); the
+// joint forces found with the contacts' are dropped, since the integrator evaluates the joints
+// again at each of its stages with these contact forces held. Empty in a world without joints.
+struct RestingJointRows {
+  std::vector<JointRow> rows;
+  Eigen::VectorXd b;
+};
+
+RestingJointRows restingJointRows(const RestingContext& ctx) {
+  RestingJointRows out;
+  if (ctx.world.joints.empty()) return out;
+  std::vector<Wrench> applied = ctx.wrenches;
+  addMotorTorques(ctx.world, applied);
+  jointAccelerationRows(ctx.world, applied, ctx.step_s, false, out.rows, out.b);
+  return out;
+}
+
+// Pivots the contact problem p (over lcp's rows) together with the joint rows, if any; returns the
+// contact rows' part of the answer.
+lcp::LcpResult pivotWithJoints(const RestingContext& ctx, const ContactLcp& lcp, const lcp::LcpProblem& p,
+                               const RestingJointRows& joints) {
+  if (joints.rows.empty()) return solveContactLcp(p, ctx.stats);
+  lcp::LcpResult joined = solveContactLcp(withJointRows(ctx.world, p, lcp.rows, joints.rows, joints.b), ctx.stats);
+  joined.f.conservativeResize(p.size());
+  joined.w.conservativeResize(p.size());
+  return joined;
+}
+
 Eigen::Vector3d tangentialVelocity(const World& world, const Contact& c) {
   Eigen::Vector3d v = pointVelocity(world.bodies[c.b], c.point) - pointVelocity(world.bodies[c.a], c.point);
   return v - v.dot(c.normal) * c.normal;
@@ -179,6 +210,7 @@ void rememberForces(const RestingContext& ctx, const std::vector<const Contact*>
 // BoxedFriction: every contact gets boxed friction rows (|f_t| <= mu f_n, asking for zero
 // tangential acceleration). Always bounded (A is positive semi-definite); a sliding contact is
 // then held by at most mu f_n for this sub-step instead of being slowed by exactly mu f_n. Counted.
+// The joints' rows are pivoted with the contacts', as in pivot().
 void restWithBoxedFriction(const RestingContext& ctx, const std::vector<const Contact*>& resting) {
   ++ctx.stats.friction_fallbacks;
   ContactLcp lcp = buildContactLcp(ctx.world, resting, std::vector<char>(resting.size(), 1));
@@ -187,7 +219,7 @@ void restWithBoxedFriction(const RestingContext& ctx, const std::vector<const Co
   for (int r : lcp.normal_row) is_friction[r] = 0;
   stopResidualSlip(ctx, lcp.rows, is_friction, lcp.problem.b);
   stopNormalDrift(ctx, lcp.rows, lcp.normal_row, lcp.problem.b);
-  lcp::LcpResult r = solveContactLcp(lcp.problem, ctx.stats);
+  lcp::LcpResult r = pivotWithJoints(ctx, lcp, lcp.problem, restingJointRows(ctx));
   addForces(ctx.world, lcp.rows, r.f, ctx.wrenches);
 }
 
@@ -197,8 +229,8 @@ void restWithBoxedFriction(const RestingContext& ctx, const std::vector<const Co
 // within 200 sweeps, which is why large islands with a memory, and islands whose pivoting stopped
 // short, go to VelocityLevel instead; this is left for a sub-step without a memory. Sliding
 // friction is mu f_n against the slide, or less where that would reverse the slide within `step_s`.
+// In a world with joints the joints' rows are swept with the contacts' (contact_joint_lcp.h).
 void sweepAccelerations(const RestingContext& ctx, const std::vector<const Contact*>& resting) {
-  ++ctx.stats.iterative_islands;
   ContactRows rows;   // A is never formed
   std::vector<RowLimit> limits;
   for (const Contact* c : resting) {
@@ -225,6 +257,16 @@ void sweepAccelerations(const RestingContext& ctx, const std::vector<const Conta
   for (std::size_t r = 0; r < limits.size(); ++r) is_static_friction[r] = limits[r].kind == RowLimit::Static;
   stopResidualSlip(ctx, rows.rows, is_static_friction, b);
   stopNormalDrift(ctx, rows.rows, rows.normal_row, b);
+  const RestingJointRows joints = restingJointRows(ctx);
+  if (!joints.rows.empty()) {
+    // Counts its island and sweeps itself; stops where the contacts' own sweeps would.
+    const Eigen::VectorXd f = sweepContactsWithJoints(ctx.world, rows, limits, b, joints.rows, joints.b, {}, ctx.stats,
+                                                      RowGaussSeidelSettings{}.tolerance)
+                                  .head(rows.size());
+    addForces(ctx.world, rows.rows, f, ctx.wrenches);
+    return;
+  }
+  ++ctx.stats.iterative_islands;
   RowGaussSeidelResult r = solveRowsGaussSeidel(ctx.world, rows.rows, b, limits);
   ctx.stats.sweeps += r.sweeps;
   if (!r.converged) ++ctx.stats.unconverged_sweeps;
@@ -266,14 +308,10 @@ void solveAtVelocityLevel(const RestingContext& ctx, const std::vector<const Con
   } else {
     // The joints' rows swept with the island's (joints/contact_joint_lcp.h), as pivot() takes them:
     // their velocity terms over the step are J v + (J a + J' v) step_s.
-    std::vector<JointRow> joint_rows;
-    Eigen::VectorXd joint_b;
-    std::vector<Wrench> applied = ctx.wrenches;
-    addMotorTorques(ctx.world, applied);
-    jointAccelerationRows(ctx.world, applied, step_s, false, joint_rows, joint_b);
-    joint_b *= step_s;
-    for (std::size_t j = 0; j < joint_rows.size(); ++j) joint_b[j] += jointRowVelocity(ctx.world, joint_rows[j]);
-    impulses = sweepContactsWithJoints(ctx.world, rows, pyramidLimits(rows, resting), b, joint_rows, joint_b,
+    RestingJointRows joints = restingJointRows(ctx);
+    joints.b *= step_s;
+    for (std::size_t j = 0; j < joints.rows.size(); ++j) joints.b[j] += jointRowVelocity(ctx.world, joints.rows[j]);
+    impulses = sweepContactsWithJoints(ctx.world, rows, pyramidLimits(rows, resting), b, joints.rows, joints.b,
                                        warmStart(rows, last), ctx.stats)
                    .head(n);
   }
@@ -333,24 +371,9 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
     coupling = delassus(world, all).block(0, n, n, m);
   }
   slide.g = Eigen::VectorXd::Zero(m);   // dynamic friction magnitudes
-  // A world with joints: a resting body may hang from one (a chain lying on the ground), so the
-  // joints' rows join the island's problem and its contact forces are those the joints allow
-  // (joints/contact_joint_lcp.h). The joint forces found with them are dropped: the integrator
-  // evaluates the joints again at each of its stages, with these contact forces held.
-  std::vector<JointRow> joint_rows;
-  Eigen::VectorXd joint_b;
-  if (!world.joints.empty()) {
-    std::vector<Wrench> applied = ctx.wrenches;
-    addMotorTorques(world, applied);
-    jointAccelerationRows(world, applied, ctx.step_s, false, joint_rows, joint_b);
-  }
-  auto solve = [&](const lcp::LcpProblem& p) {
-    if (joint_rows.empty()) return solveContactLcp(p, ctx.stats);
-    lcp::LcpResult joined = solveContactLcp(withJointRows(world, p, lcp.rows, joint_rows, joint_b), ctx.stats);
-    joined.f.conservativeResize(p.size());
-    joined.w.conservativeResize(p.size());
-    return joined;
-  };
+  // A world with joints: the joints' rows join the island's problem (restingJointRows).
+  const RestingJointRows joints = restingJointRows(ctx);
+  auto solve = [&](const lcp::LcpProblem& p) { return pivotWithJoints(ctx, lcp, p, joints); };
   lcp.problem.b = b;
   lcp::LcpResult r = solve(lcp.problem);
   if (!usableLcpAnswer(r, lcp.problem)) {
@@ -458,7 +481,8 @@ void addRestingForces(const std::vector<Contact>& contacts, const RestingContext
   std::vector<char> at_velocity(islands.size(), 0);
   std::vector<std::size_t> first_near(islands.size());
   for (std::size_t i = 0; i < islands.size(); ++i) {
-    solve[i] = chooseRestingSolve(islands[i], ctx);
+    const bool can_force = ctx.forced && (*ctx.forced != RestingSolve::VelocityLevel || (ctx.memory && ctx.step_s > 0));
+    solve[i] = can_force ? *ctx.forced : chooseRestingSolve(islands[i], ctx);
     at_velocity[i] = solve[i] == RestingSolve::VelocityLevel;
     first_near[i] = islands[i].size();
   }

@@ -12,8 +12,13 @@
 //                       pivot has no memory to start from: Gauss-Seidel on the accelerations, from 0
 //   VelocityLevel       an island too large to pivot, with a memory: the impulses over the step,
 //                       warm-started from the last call (island_impulses.h), as time stepping does
+// In a world with joints every one of the four takes the joints' rows into its problem
+// (joints/contact_joint_lcp.h), so that a jointed body's contact forces are those its joints
+// allow: a body hanging from a hinge with its end on the ground, solved as if it were free, gets
+// a push the hinge then turns into a creep along the ground.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "dynamics/contact.h"
@@ -44,6 +49,10 @@ struct RestingContext {
   RestingMemory* memory;              // null: no warm start, and nothing remembered
   std::vector<Wrench>& wrenches;      // in: the applied forces; out: plus the contact forces
   ContactSolveStats& stats;
+  // Every island starts with this solve instead of chooseRestingSolve's (VelocityLevel only where
+  // there is a memory and a step): for tests that must reach a fallback on a scene that would not
+  // need it. None in a run.
+  std::optional<RestingSolve> forced = std::nullopt;
 };
 
 // Pivoting unless the island is too large to pivot (contact_rows.h): then VelocityLevel when there

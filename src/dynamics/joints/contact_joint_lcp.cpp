@@ -64,7 +64,8 @@ lcp::LcpProblem withJointRows(const World& world, const lcp::LcpProblem& contact
 Eigen::VectorXd sweepContactsWithJoints(const World& world, const ContactRows& contacts,
                                         const std::vector<RowLimit>& limits, const Eigen::VectorXd& contact_b,
                                         const std::vector<JointRow>& joints, const Eigen::VectorXd& joint_b,
-                                        const Eigen::VectorXd& contact_start, ContactSolveStats& stats) {
+                                        const Eigen::VectorXd& contact_start, ContactSolveStats& stats,
+                                        double tolerance) {
   // The pyramid limits as bounds: a normal row pushes, a friction row within mu of its normal's.
   const int nc = contacts.size(), nj = static_cast<int>(joints.size()), n = nc + nj;
   lcp::LcpProblem p;
@@ -74,10 +75,18 @@ Eigen::VectorXd sweepContactsWithJoints(const World& world, const ContactRows& c
   p.hi = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
   p.friction_of.assign(n, -1);
   p.mu = Eigen::VectorXd::Zero(n);
+  std::vector<char> one_sided(n, 0);
   for (int i = 0; i < nc; ++i)
-    if (limits[i].kind == RowLimit::Static) {
+    if (limits[i].kind != RowLimit::Normal) {
       p.friction_of[i] = limits[i].normal;
       p.mu[i] = limits[i].mu;
+    }
+  // A slide's row: opposes the slide by at most mu f_n, asking for the slide's stop (its target)
+  // at most, as row_gauss_seidel.h's Sliding rows do.
+  for (int i = 0; i < nc; ++i)
+    if (limits[i].kind == RowLimit::Sliding) {
+      one_sided[i] = 1;
+      p.b[i] -= limits[i].target;
     }
   for (int i = 0; i < nj; ++i) {
     p.lo[nc + i] = joints[i].lo;
@@ -86,7 +95,7 @@ Eigen::VectorXd sweepContactsWithJoints(const World& world, const ContactRows& c
   Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
   if (contact_start.size() == nc) start.head(nc) = contact_start;
   GenericSweeps swept = solveGenericGaussSeidel(world, allRows(contacts.rows, joints), p, start,
-                                                IslandImpulseSettings{}.max_sweeps, tuning::kImpulseTolerance);
+                                                IslandImpulseSettings{}.max_sweeps, tolerance, one_sided);
   ++stats.iterative_islands;
   stats.sweeps += swept.sweeps;
   if (!swept.converged) ++stats.unconverged_sweeps;

@@ -12,6 +12,7 @@
 
 #include "dynamics/contact_rows.h"
 #include "dynamics/joints/joint_rows.h"
+#include "dynamics/settings.h"
 
 namespace tumble {
 
@@ -39,12 +40,14 @@ Eigen::VectorXd solveContactsWithJoints(World& world, const ContactLcp& contacts
                                         ContactSolveStats& stats);
 
 // The same rows by projected Gauss-Seidel only, for a solve that is iterative anyway (the Baraff
-// model's resting islands at the velocity level): `limits` are the contact rows' pyramid limits
-// (row_gauss_seidel.h), b both sets' velocity terms. Returns the contact rows' impulses, then the
-// joint rows'; applies nothing.
+// model's resting islands at the velocity level, and its acceleration sweeps): `limits` are the
+// contact rows' limits (row_gauss_seidel.h: pyramids, or a slide's row against it with its target),
+// b both sets' velocity (or acceleration) terms. Returns the contact rows' impulses (forces), then
+// the joint rows'; applies nothing.
 Eigen::VectorXd sweepContactsWithJoints(const World& world, const ContactRows& contacts,
                                         const std::vector<RowLimit>& limits, const Eigen::VectorXd& contact_b,
                                         const std::vector<JointRow>& joints, const Eigen::VectorXd& joint_b,
-                                        const Eigen::VectorXd& contact_start, ContactSolveStats& stats);
+                                        const Eigen::VectorXd& contact_start, ContactSolveStats& stats,
+                                        double tolerance = tuning::kImpulseTolerance);
 
 }  // namespace tumble

@@ -8,7 +8,8 @@
 namespace tumble {
 
 GenericSweeps solveGenericGaussSeidel(const World& world, const std::vector<JointRow>& rows, const lcp::LcpProblem& p,
-                                      const Eigen::VectorXd& start, int max_sweeps, double tolerance) {
+                                      const Eigen::VectorXd& start, int max_sweeps, double tolerance,
+                                      const std::vector<char>& one_sided) {
   const int n = static_cast<int>(rows.size());
   const std::size_t bodies = world.bodies.size();
   GenericSweeps out;
@@ -40,7 +41,10 @@ GenericSweeps solveGenericGaussSeidel(const World& world, const std::vector<Join
   };
   for (int i = 0; i < n; ++i)
     if (out.f[i] != 0) push(i, out.f[i]);
-  const double stop = tolerance * (p.b.lpNorm<Eigen::Infinity>() + 1e-300);
+  double scale = 0;   // the largest finite |b|: a one-sided row's -inf asks for its bound, not a size
+  for (int i = 0; i < n; ++i)
+    if (std::isfinite(p.b[i])) scale = std::max(scale, std::abs(p.b[i]));
+  const double stop = tolerance * (scale + 1e-300);
   for (out.sweeps = 1; out.sweeps <= max_sweeps; ++out.sweeps) {
     double largest = 0;
     for (int i = 0; i < n; ++i) {
@@ -51,9 +55,10 @@ GenericSweeps solveGenericGaussSeidel(const World& world, const std::vector<Join
       double lo = p.lo[i], hi = p.hi[i];
       if (p.isFriction(i)) {
         hi = p.mu[i] * std::max(0.0, out.f[p.friction_of[i]]);
-        lo = -hi;
+        lo = !one_sided.empty() && one_sided[i] ? 0.0 : -hi;
       }
-      const double next = std::clamp(out.f[i] - w * inv_diag[i], lo, hi);
+      // A row that moves nothing is only kept within its bounds (and an infinite w would give 0 x inf).
+      const double next = std::clamp(out.f[i] - (inv_diag[i] > 0 ? w * inv_diag[i] : 0.0), lo, hi);
       const double df = next - out.f[i];
       if (df == 0) continue;
       out.f[i] = next;

@@ -22,8 +22,11 @@ struct GenericSweeps {
 
 // Solves w = A f + b within the problem's bounds (its A is not read: the rows give it), from `start`
 // (one entry per row, or empty for zero), until no row's velocity changes by more than `tolerance`
-// times the largest |b| in a sweep, at most `max_sweeps`.
+// times the largest finite |b| in a sweep, at most `max_sweeps`. `one_sided` (one entry per row, or
+// empty): friction rows whose force only opposes, 0 <= f <= mu f_n, a slide's dynamic friction
+// (row_gauss_seidel.h's Sliding rows); such a row's b may be -inf, for mu f_n whatever the rest.
 GenericSweeps solveGenericGaussSeidel(const World& world, const std::vector<JointRow>& rows, const lcp::LcpProblem& p,
-                                      const Eigen::VectorXd& start, int max_sweeps, double tolerance);
+                                      const Eigen::VectorXd& start, int max_sweeps, double tolerance,
+                                      const std::vector<char>& one_sided = {});
 
 }  // namespace tumble
