@@ -107,6 +107,7 @@ DrawMarks overlayMarks(const OverlaySpec& spec, const OverlayScales& scales, con
   m.line_px = std::max(1.0f, h / 300);
   m.dot_px = std::max(3.0f, h / 90);
   m.outline_px = std::max(0.75f, h / 720);
+  m.faint_px = std::max(1.0f, h / 480);
   if (spec.has(OverlayKind::Forces)) {
     for (const RecordedContact& c : record.contacts) {
       if (!c.has_force) continue;

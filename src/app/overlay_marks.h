@@ -45,6 +45,11 @@ inline const Eigen::Vector3f kSeparating{0.80f, 0.80f, 0.85f};
 inline const Eigen::Vector3f kForce{1.00f, 0.50f, 0.00f};
 inline const Eigen::Vector3f kImpulse{0.95f, 0.25f, 0.95f};
 inline const Eigen::Vector3f kVelocity{0.25f, 0.55f, 1.00f};
+inline const Eigen::Vector3f kTrialApart{0.30f, 0.85f, 1.00f};    // back_step: a trial time still apart
+inline const Eigen::Vector3f kTrialDeep{1.00f, 0.35f, 0.30f};     // back_step: a trial time too deep
+inline const Eigen::Vector3f kFirstContact{1.00f, 1.00f, 1.00f};  // back_step: the time it found
+inline const Eigen::Vector3f kBox{1.00f, 0.90f, 0.35f};           // broad_phase: a piece's box
+inline const Eigen::Vector3f kPair{0.10f, 0.95f, 0.75f};          // broad_phase: a candidate pair
 }  // namespace overlay_colour
 
 }  // namespace tumble

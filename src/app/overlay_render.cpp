@@ -1,10 +1,15 @@
 #include "app/overlay_render.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "app/back_step_marks.h"
+#include "app/broad_phase_marks.h"
+#include "app/energy_inset_panel.h"
 #include "app/energy_plot_file.h"
 #include "app/overlay_text.h"
 #include "base/error.h"
+#include "render/camera_matrices.h"
 #include "render/overlay_composite.h"
 
 namespace tumble {
@@ -22,12 +27,15 @@ void OverlayRender::checkMotionSource(bool from_trajectory) const {
 
 void OverlayRender::attach(Simulator& simulator, const StepSettings& settings) {
   if (!any()) return;
-  recorder_.emplace(simulator.world(), settings);
+  recorder_.emplace(simulator.world(), settings, FrameRecordOptions{spec_.has(OverlayKind::BroadPhase)});
   simulator.setImpactLog(&impacts_);
+  if (spec_.has(OverlayKind::BackStep)) simulator.setBackStepLog(&back_steps_);
 }
 
 void OverlayRender::onFrame(const Simulator& simulator) {
-  if (recorder_) records_.push_back(recorder_->record(simulator.world(), simulator.pipeline(), impacts_));
+  if (recorder_)
+    records_.push_back(recorder_->record(simulator.world(), simulator.pipeline(), impacts_,
+                                         spec_.has(OverlayKind::BackStep) ? &back_steps_ : nullptr));
 }
 
 void OverlayRender::prepare(const World& world, const SceneDrawing& drawing, const Trajectory& trajectory,
@@ -38,6 +46,14 @@ void OverlayRender::prepare(const World& world, const SceneDrawing& drawing, con
   scales_ = overlayScales(world, bodyRadii(drawing), records_, trajectory, velocity_bodies_);
   model_ = model;
   dt_s_ = dt_s;
+  if (spec_.has(OverlayKind::BackStep))
+    for (const RigidBody& b : world.bodies) outlines_.push_back(bodyOutline(b));
+  if (spec_.has(OverlayKind::EnergyInset))
+    for (const FrameRecord& r : records_) {
+      energy_.time.push_back(r.time);
+      energy_.kinetic.push_back(r.kinetic);
+      energy_.potential.push_back(r.potential);
+    }
 }
 
 void OverlayRender::addMarks(DrawFrame& frame, int frame_number, const Trajectory& trajectory, int frame_height) const {
@@ -48,9 +64,30 @@ void OverlayRender::addMarks(DrawFrame& frame, int frame_number, const Trajector
   const FrameRecord& record = k < records_.size() ? records_[k] : kNone;
   frame.marks = overlayMarks(spec_, scales_, record, trajectory.frames[k], velocity_bodies_, *world_,
                              frame.camera.eye, frame_height);
+  if (spec_.has(OverlayKind::BroadPhase)) addBroadPhaseMarks(record.broad_phase, frame.marks);
+  if (spec_.has(OverlayKind::BackStep)) addBackStepMarks(record, outlines_, frame.marks);
 }
 
-void OverlayRender::addText(RgbImage& image, int frame_number, int frames) const {
+void OverlayRender::addText(RgbImage& image, int frame_number, int frames, const DrawCamera& camera) const {
+  const std::size_t k = static_cast<std::size_t>(frame_number - 1);
+  if (spec_.has(OverlayKind::BackStep) && k < records_.size() && !records_[k].back_steps.empty()) {
+    // Each back-step's count of trials beside its impact, placed as the marks are projected.
+    const Eigen::Matrix4f view_proj =
+        render::cameraViewProjection(camera, static_cast<float>(image.width) / static_cast<float>(image.height));
+    const double font_px = overlayFontPx(image.height);
+    for (const BackStepLabel& label : backStepLabels(records_[k])) {
+      const Eigen::Vector4f clip = view_proj * label.at.cast<float>().homogeneous();
+      if (clip.w() <= 0) continue;   // behind the camera
+      const double x = (clip.x() / clip.w() * 0.5 + 0.5) * image.width;
+      const double y = (0.5 - clip.y() / clip.w() * 0.5) * image.height;   // rows top first
+      const OverlayPanel p = labelPanel(label.text, font_px, x, y);
+      compositeOver(image, p.layer, p.x, p.y);
+    }
+  }
+  if (spec_.has(OverlayKind::EnergyInset) && !energy_.time.empty()) {
+    const OverlayPanel inset = energyInsetPanel(energy_, std::min(k + 1, energy_.time.size()), image.width, image.height);
+    compositeOver(image, inset.layer, inset.x, inset.y);
+  }
   if (spec_.has(OverlayKind::Hud) && !records_.empty()) {
     const FrameRecord& r = records_[static_cast<std::size_t>(frame_number - 1)];
     HudFigures h;

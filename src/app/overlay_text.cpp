@@ -42,11 +42,11 @@ struct Row {
   plot::Rgb key{};
 };
 
-// Rows on a panel whose top-left (or bottom-left, `from_bottom`) corner is `margin` px in from the
-// frame's: drawn on a layer of the panel's own size, so that only its pixels are laid over the frame.
-OverlayPanel panel(const std::vector<Row>& rows, double font_px, int frame_height, bool from_bottom) {
+// Rows on a panel, drawn on a layer of the panel's own size, so that only its pixels are laid over
+// the frame; its corner at (0, 0) until placed.
+OverlayPanel panelLayer(const std::vector<Row>& rows, double font_px) {
   const plot::Font font{font_px, false};
-  const double pad = std::round(font_px * 0.45), line = std::round(font_px * 1.3), margin = std::round(font_px * 0.4);
+  const double pad = std::round(font_px * 0.45), line = std::round(font_px * 1.3);
   const double key_w = std::round(font_px * 1.1);
   double width = 0;
   {
@@ -66,9 +66,20 @@ OverlayPanel panel(const std::vector<Row>& rows, double font_px, int frame_heigh
     c.text(x, y, r.text, font, kText);
     y += line;
   }
-  const int x0 = static_cast<int>(margin);
-  const int y0 = from_bottom ? frame_height - static_cast<int>(margin + height) : static_cast<int>(margin);
-  return {c.layer(), x0, y0};
+  return {c.layer(), 0, 0};
+}
+
+// The space between a panel and the frame's edge.
+double panelMargin(double font_px) { return std::round(font_px * 0.4); }
+
+// Rows on a panel whose top-left (or bottom-left, `from_bottom`) corner is the margin in from the
+// frame's.
+OverlayPanel panel(const std::vector<Row>& rows, double font_px, int frame_height, bool from_bottom) {
+  OverlayPanel p = panelLayer(rows, font_px);
+  const int margin = static_cast<int>(panelMargin(font_px));
+  p.x = margin;
+  p.y = from_bottom ? frame_height - margin - p.layer.height : margin;
+  return p;
 }
 
 }  // namespace
@@ -92,6 +103,14 @@ OverlayPanel hudPanel(const HudFigures& h, int frame_height) {
   return panel(rows, overlayFontPx(frame_height), frame_height, false);
 }
 
+OverlayPanel labelPanel(const std::string& text, double font_px, double x, double y) {
+  OverlayPanel p = panelLayer({{text}}, font_px);
+  // Up and to the right of the point, by half a line: beside the impact, not over it.
+  p.x = static_cast<int>(std::lround(x + font_px * 0.5));
+  p.y = static_cast<int>(std::lround(y - font_px * 0.5)) - p.layer.height;
+  return p;
+}
+
 OverlayPanel textPanel(const std::vector<std::string>& lines, double font_px, int frame_height, bool from_bottom) {
   std::vector<Row> rows;
   for (const std::string& l : lines) rows.push_back({l});
@@ -113,6 +132,15 @@ std::optional<OverlayPanel> legendPanel(const OverlaySpec& spec, const OverlaySc
   }
   if (spec.has(OverlayKind::Velocities))
     rows.push_back({"velocity: 1 m = " + scaleText(1 / s.speed_s, "m/s"), true, rgb(kVelocity)});
+  if (spec.has(OverlayKind::BackStep)) {
+    rows.push_back({"back-step trial: apart", true, rgb(kTrialApart)});
+    rows.push_back({"back-step trial: too deep", true, rgb(kTrialDeep)});
+    rows.push_back({"first contact found", true, rgb(kFirstContact)});
+  }
+  if (spec.has(OverlayKind::BroadPhase)) {
+    rows.push_back({"piece's box (AABB)", true, rgb(kBox)});
+    rows.push_back({"broad-phase pair", true, rgb(kPair)});
+  }
   if (rows.empty()) return std::nullopt;
   return panel(rows, overlayFontPx(frame_height), frame_height, true);
 }

@@ -33,6 +33,9 @@ struct OverlayPanel {
 // Text size for a frame this tall (px): 18 px text at 720 rows, never under 8.
 double overlayFontPx(int frame_height);
 OverlayPanel hudPanel(const HudFigures& hud, int frame_height);
+// One line of text on the same panel, beside the point (x, y) px in the frame: up and to its right
+// (the back_step overlay's count of trials, by its impact).
+OverlayPanel labelPanel(const std::string& text, double font_px, double x, double y);
 // Lines of text on the same panel, `font_px` tall, in the top-left corner of a picture this tall
 // (or the bottom-left one, `from_bottom`): the tiles' labels of render --compare-models.
 OverlayPanel textPanel(const std::vector<std::string>& lines, double font_px, int frame_height, bool from_bottom);

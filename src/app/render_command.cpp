@@ -252,7 +252,7 @@ int run(const RenderOptions& o) {
     times.read_back_ms.push_back(1e3 * secondsSince(start));
     times.read_back += times.read_back_ms.back() / 1e3;
     start = std::chrono::steady_clock::now();
-    overlays.addText(image, frame, scene.render.frames);   // counted as rendering
+    overlays.addText(image, frame, scene.render.frames, drawing.frame.camera);   // counted as rendering
     times.render_ms.back() += 1e3 * secondsSince(start);
     times.render += secondsSince(start);
     start = std::chrono::steady_clock::now();

@@ -69,6 +69,10 @@ class ContactDetector {
   const CollisionHull& hull(int piece) const { return pieces_[piece].hull; }
 
   bool hasCollidablePairs() const { return has_pairs_; }
+  // The broad phase as its last sweep left it (the broad_phase overlay, frame_record.h): each
+  // piece's box and the candidate pairs (empty when it has never swept: no two bodies can meet).
+  const SweepAndPrune& broadPhase() const { return broad_; }
+  const std::vector<ProxyPair>& broadPhasePairs() const { return candidates_; }
   // What detection had to do, counted over the run: a stage a scene does not need stays at zero
   // ("model only what a scene needs"). Friction rows are built only for frictional contacts.
   struct Work {

@@ -17,14 +17,33 @@ void worldEnergy(const World& world, double& kinetic, double& potential) {
   }
 }
 
-FrameRecorder::FrameRecorder(const World& world, const StepSettings& settings)
-    : awake_(world), detector_(awake_), contact_(settings.contact) {}
+namespace {
 
-FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, std::vector<ImpactMark>& impacts) {
+BroadPhaseRecord broadPhaseOf(const ContactDetector& detector) {
+  BroadPhaseRecord out;
+  const SweepAndPrune& broad = detector.broadPhase();
+  if (detector.work().broad_phase_runs == 0) return out;   // never swept: its boxes were never set
+  out.boxes.reserve(static_cast<std::size_t>(broad.size()));
+  for (const BroadPhaseProxy& p : broad.proxies())
+    out.boxes.push_back({p.body, p.box.min.cast<float>(), p.box.max.cast<float>()});
+  out.pairs.reserve(detector.broadPhasePairs().size());
+  for (const ProxyPair& p : detector.broadPhasePairs()) out.pairs.emplace_back(p.a, p.b);
+  return out;
+}
+
+}  // namespace
+
+FrameRecorder::FrameRecorder(const World& world, const StepSettings& settings, FrameRecordOptions options)
+    : awake_(world), detector_(awake_), contact_(settings.contact), options_(options) {}
+
+FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, std::vector<ImpactMark>& impacts,
+                                  BackStepLog* back_steps) {
   FrameRecord out;
   out.time = world.time;
   out.impacts.swap(impacts);
   impacts.clear();
+  if (back_steps) out.back_steps = back_steps->take();
+  if (options_.broad_phase) out.broad_phase = broadPhaseOf(pipeline.detector());
   worldEnergy(world, out.kinetic, out.potential);
   out.potential += pipeline.storedEnergy();
   if (!detector_.hasCollidablePairs()) return out;

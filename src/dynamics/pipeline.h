@@ -47,6 +47,11 @@ class Pipeline {
   StepImpulses lastImpulses() const { return model_->lastImpulses(); }
   // While set, the model appends the impacts it resolves (shared_stages.h, ImpactMark).
   void setImpactLog(std::vector<ImpactMark>* log) { shared_.impact_log = log; }
+  // While set, the Baraff model keeps the brackets of its back-steps (back_step_log.h).
+  void setBackStepLog(BackStepLog* log) { shared_.back_step_log = log; }
+  // The detection the steps run: its broad phase's boxes and pairs as of its last sweep, read by
+  // the broad_phase overlay (frame_record.h).
+  const ContactDetector& detector() const { return shared_.detector; }
 
  private:
   void settleAtRest(World& world, const StepSettings& settings);

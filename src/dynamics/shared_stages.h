@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/back_step_log.h"
 #include "dynamics/body_extent.h"
 #include "dynamics/contact_detection.h"
 #include "dynamics/contact_solve_common.h"
@@ -89,6 +90,7 @@ struct SharedStages {
   bool contacts_fresh = false;       // `contacts` hold the present state: no detection needed
   std::vector<Wrench> wrenches;      // applied forces of the (sub-)step, per body
   std::vector<ImpactMark>* impact_log = nullptr;   // set: impacts are appended (overlays only)
+  BackStepLog* back_step_log = nullptr;            // set: back-steps' brackets are kept (overlays only)
 
   std::vector<StageTime> profile;
   PipelineCounters counters;

@@ -36,6 +36,8 @@ class Simulator {
   const World& world() const { return world_; }
   // While set, the contact model appends the impacts it resolves (for overlays; frame_record.h).
   void setImpactLog(std::vector<ImpactMark>* log) { pipeline_.setImpactLog(log); }
+  // While set, the Baraff model keeps its back-steps' brackets (for overlays; back_step_log.h).
+  void setBackStepLog(BackStepLog* log) { pipeline_.setBackStepLog(log); }
   const Pipeline& pipeline() const { return pipeline_; }
   const FaultCheck& faults() const { return faults_; }
   // The run measured against the scene's accuracy target; empty when the scene sets none.

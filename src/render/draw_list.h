@@ -78,13 +78,24 @@ struct DrawDot {
   Eigen::Vector3f colour;     // sRGB, 0..1
 };
 
+// A faded line under the marks, thin and without an outline, blended over the frame at `alpha`:
+// many of them (a body's edges at every trial of a back-step, every piece's box) would bury the
+// scene if drawn as marks.
+struct DrawFaintSegment {
+  Eigen::Vector3f from, to;   // m, world
+  Eigen::Vector3f colour;     // sRGB, 0..1
+  float alpha = 0.5f;         // 0..1
+};
+
 struct DrawMarks {
   std::vector<DrawSegment> segments;
   std::vector<DrawDot> dots;
+  std::vector<DrawFaintSegment> faint;   // drawn first, under every mark
   float line_px = 2;          // segment width
   float dot_px = 6;           // dot diameter
   float outline_px = 1;       // dark rim around each, for contrast on any background
-  bool empty() const { return segments.empty() && dots.empty(); }
+  float faint_px = 1;         // faint lines' width
+  bool empty() const { return segments.empty() && dots.empty() && faint.empty(); }
 };
 
 struct DrawFrame {

@@ -13,12 +13,15 @@ struct Screen {
   Eigen::Vector2f pixels(const Eigen::Vector4f& clip) const {
     return {(clip.x() / clip.w() * 0.5f + 0.5f) * width, (clip.y() / clip.w() * 0.5f + 0.5f) * height};
   }
-  void push(std::vector<float>& out, const Eigen::Vector2f& px, const float* rgb) const {
-    out.insert(out.end(), {px.x() / width * 2 - 1, px.y() / height * 2 - 1, rgb[0], rgb[1], rgb[2]});
+  void push(std::vector<float>& out, const Eigen::Vector2f& px, const float* rgb, float alpha = 1) const {
+    out.insert(out.end(), {px.x() / width * 2 - 1, px.y() / height * 2 - 1, rgb[0], rgb[1], rgb[2], alpha});
   }
 };
 
-void quad(const Screen& s, Eigen::Vector2f a, Eigen::Vector2f b, float half, const float* rgb, std::vector<float>& out) {
+constexpr int kFloats = 6;   // per vertex: x, y, r, g, b, a
+
+void quad(const Screen& s, Eigen::Vector2f a, Eigen::Vector2f b, float half, const float* rgb, std::vector<float>& out,
+          float alpha = 1) {
   Eigen::Vector2f d = b - a;
   const float len = d.norm();
   d = len > 1e-6f ? Eigen::Vector2f(d / len) : Eigen::Vector2f(1, 0);
@@ -26,7 +29,7 @@ void quad(const Screen& s, Eigen::Vector2f a, Eigen::Vector2f b, float half, con
   a -= d * half;   // square caps: joined segments (an arrow's head) meet without a notch
   b += d * half;
   const Eigen::Vector2f corners[] = {a - n, b - n, b + n, a - n, b + n, a + n};
-  for (const Eigen::Vector2f& p : corners) s.push(out, p, rgb);
+  for (const Eigen::Vector2f& p : corners) s.push(out, p, rgb, alpha);
 }
 
 void octagon(const Screen& s, const Eigen::Vector2f& c, float r, const float* rgb, std::vector<float>& out) {
@@ -52,6 +55,10 @@ void buildMarkTriangles(const DrawMarks& marks, const Eigen::Matrix4f& view_proj
                         std::vector<float>& out) {
   out.clear();
   const Screen s{width, height};
+  for (const DrawFaintSegment& seg : marks.faint) {   // under everything, no outline
+    Eigen::Vector4f a = view_proj * seg.from.homogeneous(), b = view_proj * seg.to.homogeneous();
+    if (clipSegment(a, b)) quad(s, s.pixels(a), s.pixels(b), marks.faint_px / 2, seg.colour.data(), out, seg.alpha);
+  }
   std::vector<std::pair<Eigen::Vector2f, Eigen::Vector2f>> lines;
   std::vector<Eigen::Vector2f> dots;
   lines.reserve(marks.segments.size());
@@ -85,9 +92,9 @@ MarksPass::MarksPass() {
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, kFloats * sizeof(float), nullptr);
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), reinterpret_cast<void*>(2 * sizeof(float)));
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kFloats * sizeof(float), reinterpret_cast<void*>(2 * sizeof(float)));
   glBindVertexArray(0);
 }
 
@@ -102,13 +109,17 @@ void MarksPass::draw(const DrawMarks& marks, const Eigen::Matrix4f& view_proj, i
   if (vertices_.empty()) return;
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
+  // Faint lines blend over the frame (in sRGB, as written); the marks have alpha 1 and replace it.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   program.use();
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices_.size() * sizeof(float)), vertices_.data(),
                GL_STREAM_DRAW);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices_.size() / 5));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices_.size() / kFloats));
   glBindVertexArray(0);
+  glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
 }
 

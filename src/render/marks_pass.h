@@ -1,6 +1,6 @@
 // Draws DrawMarks (draw_list.h) over the finished scene: each segment a quad and each dot an
-// octagon of exact pixel size, built on the CPU from the camera's projection, first every outline
-// in dark grey, then every mark in its colour. The depth test is off: marks sit on surfaces and
+// octagon of exact pixel size, built on the CPU from the camera's projection, first the faint lines
+// blended at their alpha, then every outline in dark grey, then every mark in its colour. The depth test is off: marks sit on surfaces and
 // between touching bodies, where a depth test would hide half of them or make them flicker.
 #pragma once
 
@@ -13,8 +13,9 @@
 
 namespace tumble::render {
 
-// Two triangles per segment and six per dot, in NDC, each vertex x, y, r, g, b. A segment that
-// lies behind the camera is left out, one that crosses the near plane is cut at it.
+// Two triangles per segment and six per dot, in NDC, each vertex x, y, r, g, b, a (a < 1 only for
+// faint lines). A segment that lies behind the camera is left out, one that crosses the near plane
+// is cut at it.
 void buildMarkTriangles(const DrawMarks& marks, const Eigen::Matrix4f& view_proj, int width, int height,
                         std::vector<float>& out);
 

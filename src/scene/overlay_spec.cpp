@@ -13,7 +13,8 @@ void OverlaySpec::add(OverlayKind k) {
 }
 
 const std::vector<std::string>& overlayNames() {
-  static const std::vector<std::string> names{"contacts", "forces", "velocities", "hud", "energy_plot"};
+  static const std::vector<std::string> names{"contacts", "forces",    "velocities",  "hud",
+                                              "energy_plot", "back_step", "broad_phase", "energy_inset"};
   return names;
 }
 

@@ -7,7 +7,7 @@
 
 namespace tumble {
 
-enum class OverlayKind { Contacts, Forces, Velocities, Hud, EnergyPlot };
+enum class OverlayKind { Contacts, Forces, Velocities, Hud, EnergyPlot, BackStep, BroadPhase, EnergyInset };
 
 struct OverlaySpec {
   std::vector<OverlayKind> kinds;      // in the order first asked for, each once
@@ -17,7 +17,8 @@ struct OverlaySpec {
   bool any() const { return !kinds.empty(); }
 };
 
-// "contacts", "forces", "velocities", "hud", "energy_plot", in that order.
+// "contacts", "forces", "velocities", "hud", "energy_plot", "back_step", "broad_phase",
+// "energy_inset", in that order (the enum's).
 const std::vector<std::string>& overlayNames();
 const std::string& overlayName(OverlayKind k);
 // The kind of a name, or false when the name is none of overlayNames().

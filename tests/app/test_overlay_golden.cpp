@@ -20,6 +20,7 @@ struct OverlayGolden {
   const char* scene;     // under the source tree
   const char* frames;
   const char* overlay;
+  const char* extra = "";   // more flags: a demo's own overlays turned off, to show the one kind
 };
 
 // The list tools/update-golden renders.
@@ -28,6 +29,9 @@ const OverlayGolden kGoldens[] = {
     {"overlay_forces", "scenes/knockdown.json", "10,40", "forces"},
     {"overlay_velocities", "scenes/knockdown.json", "10,22", "velocities"},
     {"overlay_hud", "scenes/knockdown.json", "22", "hud"},
+    {"overlay_back_step", "scenes/demos/back_stepping.json", "7,42", "back_step", " --set 'overlays=[]'"},
+    {"overlay_broad_phase", "scenes/knockdown.json", "10,40", "broad_phase"},
+    {"overlay_energy_inset", "scenes/knockdown.json", "22,40", "energy_inset"},
 };
 
 }  // namespace
@@ -37,7 +41,7 @@ TEST_CASE("each overlay kind matches its golden frames", "[golden][overlays]") {
   for (const OverlayGolden& g : kGoldens) {
     INFO(g.folder);
     auto r = runTumble("render " + kSource + "/" + g.scene + " --size 160x120 --samples 4 --frames " + g.frames +
-                       " --overlay " + g.overlay + " -y -o " + (dir / g.folder).string() + "/ --check-against " +
+                       " --overlay " + g.overlay + g.extra + " -y -o " + (dir / g.folder).string() + "/ --check-against " +
                        kSource + "/tests/golden/" + g.folder + kTolerance);
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.output, Catch::Contains("0 failed"));

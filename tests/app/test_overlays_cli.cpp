@@ -35,7 +35,11 @@ TEST_CASE("render --overlay refuses an unknown name with did-you-mean, as a bad 
   CHECK_FALSE(fs::exists(dir / "f"));   // refused before any work
   auto far = runTumble("render " + kCubeDrop + " --frames 1 -o " + (dir / "f/").string() + " --overlay sparkles");
   CHECK(far.exit_code == 64);
-  CHECK_THAT(far.output, Catch::Contains("the overlays are contacts, forces, velocities, hud, energy_plot"));
+  CHECK_THAT(far.output, Catch::Contains("the overlays are contacts, forces, velocities, hud, energy_plot, back_step, "
+                                         "broad_phase, energy_inset"));
+  auto near = runTumble("render " + kCubeDrop + " --frames 1 -o " + (dir / "f/").string() + " --overlay backstep");
+  CHECK(near.exit_code == 64);
+  CHECK_THAT(near.output, Catch::Contains("unknown overlay \"backstep\"; did you mean \"back_step\"?"));
 }
 
 TEST_CASE("a scene's overlay names are checked where they stand in the file", "[overlays][cli]") {
@@ -45,6 +49,9 @@ TEST_CASE("a scene's overlay names are checked where they stand in the file", "[
   auto set = runTumble("check " + kCubeDrop + " --set 'overlays=[\"hud\",\"forcse\"]'");
   CHECK(set.exit_code == 65);
   CHECK_THAT(set.output, Catch::Contains("did you mean \"forces\"?"));
+  auto inset = runTumble("check " + kCubeDrop + " --set 'overlays=[\"hud\",\"energy_insert\"]'");
+  CHECK(inset.exit_code == 65);
+  CHECK_THAT(inset.output, Catch::Contains("/overlays/1: unknown overlay \"energy_insert\"; did you mean \"energy_inset\"?"));
 }
 
 TEST_CASE("check lists a scene's overlays", "[overlays][cli]") {
@@ -62,6 +69,13 @@ TEST_CASE("from a trajectory file only velocities can be drawn", "[overlays][cli
                        (dir / "h/").string() + " --overlay hud");
   CHECK(hud.exit_code == 64);
   CHECK_THAT(hud.output, Catch::Contains("overlay hud needs the simulation's contacts and energy"));
+  for (const char* kind : {"back_step", "broad_phase", "energy_inset"}) {
+    INFO(kind);
+    auto r = runTumble("render " + kCubeDrop + " --from-trajectory " + csv + " --frames 1 --size 160x120 -o " +
+                       (dir / "k/").string() + " --overlay " + kind);
+    CHECK(r.exit_code == 64);
+    CHECK_THAT(r.output, Catch::Contains(std::string("overlay ") + kind + " needs the simulation's"));
+  }
   auto vel = runTumble("render " + kCubeDrop + " --from-trajectory " + csv + " --frames 1,5 --size 160x120 -q -o " +
                        (dir / "v/").string() + " --overlay velocities");
   CHECK(vel.exit_code == 0);
@@ -91,7 +105,8 @@ TEST_CASE("overlays change the frames, not the motion, and are deterministic", "
   const fs::path dir = freshTempDir("tumble_overlay_frames");
   const std::string common = " --frames 14 --size 160x120 -q -o ";
   REQUIRE(runTumble("render " + kCubeDrop + common + (dir / "plain/").string()).exit_code == 0);
-  const std::string marks = " --overlay contacts,forces --overlay velocities,hud";   // all but the plot's files
+  const std::string marks = " --overlay contacts,forces --overlay velocities,hud"   // all but the plot's files
+                            " --overlay back_step,broad_phase,energy_inset";
   REQUIRE(runTumble("render " + kCubeDrop + common + (dir / "a/").string() + marks).exit_code == 0);
   REQUIRE(runTumble("render " + kCubeDrop + common + (dir / "b/").string() + marks).exit_code == 0);
   CHECK(runTumble("diff -q --threshold 0 " + (dir / "a").string() + " " + (dir / "b").string()).exit_code == 0);

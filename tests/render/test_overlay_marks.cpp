@@ -53,6 +53,24 @@ TEST_CASE("marks are drawn over the bodies, in their sRGB colour, with a dark ou
   CHECK(renderBox(marks).pixels == marked.pixels);    // deterministic
 }
 
+TEST_CASE("faint lines blend over the frame at their alpha, without an outline", "[render][overlays]") {
+  DrawMarks marks;
+  marks.faint_px = 3;
+  marks.faint.push_back({{-0.4f, 0, 1}, {0.4f, 0, 1}, {1, 0, 0}, 0.5f});   // red at half, through the box
+  const RgbImage plain = renderBox({});
+  const RgbImage faint = renderBox(marks);
+  int halfway = 0, opaque = 0, outlined = 0;
+  for (std::size_t i = 0; i < plain.pixels.size(); i += 3) {
+    const int r0 = plain.pixels[i], r1 = faint.pixels[i];
+    halfway += r1 != r0 && std::abs(r1 - (255 + r0) / 2) <= 3;
+    opaque += r1 > (255 + r0) / 2 + 3;   // redder than half: drawn over, not blended
+    outlined += faint.pixels[i] < 30 && faint.pixels[i + 1] < 30 && faint.pixels[i + 2] < 30 && r0 >= 30;
+  }
+  CHECK(halfway > 40);   // ~ 3 px x the segment's ~30 px
+  CHECK(opaque == 0);
+  CHECK(outlined == 0);
+}
+
 TEST_CASE("mark triangles: exact pixel widths, and nothing behind the camera", "[render][overlays]") {
   DrawCamera camera;
   camera.eye = {0, -5, 0};
@@ -64,9 +82,9 @@ TEST_CASE("mark triangles: exact pixel widths, and nothing behind the camera", "
   marks.segments.push_back({{-1, 0, 0}, {1, 0, 0}, {1, 1, 1}});
   std::vector<float> v;
   render::buildMarkTriangles(marks, vp, kWidth, kHeight, v);
-  REQUIRE(v.size() == 2 * 6 * 5);   // outline quad, then the mark's: 6 vertices of x, y, r, g, b
+  REQUIRE(v.size() == 2 * 6 * 6);   // outline quad, then the mark's: 6 vertices of x, y, r, g, b, a
   // The mark's quad spans 4 px vertically: 2 px either side of the centre row, in NDC 2/120 each.
-  const float top = v[6 * 5 + 1], bottom = v[6 * 5 + 2 * 5 + 1];
+  const float top = v[6 * 6 + 1], bottom = v[6 * 6 + 2 * 6 + 1];
   CHECK(std::abs(top - bottom) == Approx(4.0f * 2 / kHeight));
   marks.segments[0] = {{0, -6, 0}, {0, -7, 0}, {1, 1, 1}};   // behind the eye
   render::buildMarkTriangles(marks, vp, kWidth, kHeight, v);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "dynamics/baraff/bracket_record.h"
 #include "dynamics/baraff/time_of_impact.h"
 #include "dynamics/contact_rows.h"
 
@@ -58,7 +59,7 @@ double BackStepper::firstContact(World& world, const StepSettings& settings, dou
     // and cut a 15 cm block's rocking to half of Housner's ratio at its third landing.
     if (before >= -tol && (touched_here || -normalVelocity(world, end) <= settings.contact.resting_speed_m_s)) continue;
     if (!offending.empty() && offending.back().pair == trial.end_pairs[i]) continue;
-    Watch w{trial.end_pairs[i], before >= -tol, near, {}};
+    Watch w{trial.end_pairs[i], before >= -tol, near, {}, end.a, end.b, end.point};
     if (w.landing)
       for (std::size_t j = 0; j < start.size(); ++j)
         if (start_pairs[j] == w.pair && start[j].depth >= -tol && !trial.lifting[j])
@@ -88,16 +89,27 @@ double BackStepper::firstContact(World& world, const StepSettings& settings, dou
     depth_at(h);
     return h;
   }
+  // The overlay's record of the search (inert without a log): each trial's poses, as tried.
+  BracketRecord record(shared.back_step_log, world.time, h);
+  for (const Watch& w : watched_) record.watch(world, w.a, w.b, w.point);
+  auto tried = [&](double t) {
+    const double depth = depth_at(t);
+    record.trial(world, t, depth > tol);
+    return depth;
+  };
+  int evaluations = 0;
   const double at_once = tuning::kImmediateContact * h;
   for (;;) {
-    const double deepest = depth_at(h);
+    const double deepest = tried(h);
     ++counters.bisection_evaluations;
     if (deepest <= tol) return h;   // only the manifold saw it too deep: nothing to go back for
-    ImpactSearch found = findFirstContact(depth_at, h, deepest, tol, settings.contact.max_bisections,
+    ImpactSearch found = findFirstContact(tried, h, deepest, tol, settings.contact.max_bisections,
                                           settings.contact.regula_falsi);
     counters.bisection_evaluations += found.evaluations;
+    evaluations += found.evaluations;
     if (found.time >= at_once) {
       depth_at(found.time);
+      record.found(found.time, evaluations);
       return found.time;
     }
     // A pair too deep at once: a landing found again at the start after its impulse (a point the

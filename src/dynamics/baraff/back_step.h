@@ -35,6 +35,8 @@ class BackStepper {
     bool landing = false;        // touching at the start: timed by its points away from `resting`
     double near = 0;             // m: how close to a resting point a point is that point
     std::vector<Eigen::Vector3d> resting;
+    int a = -1, b = -1;          // its bodies, and its too-deep point at the sub-step's end: for
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   // the back_step overlay only
   };
   double watchedDepth(const World& world, const Watch& w, const StepSettings& settings, ContactDetector& detector);
 
