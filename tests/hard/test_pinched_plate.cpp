@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 #include "../dynamics/contact_scene_runner.h"
 #include "hard_run.h"
@@ -43,6 +44,8 @@ Outcome runPinched(ContactModel model, double plate_mass_kg) {
 void checkRests(ContactModel model, std::initializer_list<double> masses) {
   for (double mass : masses) {
     const Outcome o = runPinched(model, mass);
+    std::printf("pinched plate (%s, %g kg): deepest overlap %.3g m, largest motion after 1 s %.3g m\n",
+                model == ContactModel::Baraff ? "Baraff" : "time stepping", mass, o.penetration, o.moved);
     INFO("plate of " << mass << " kg: deepest overlap " << o.penetration << " m, largest motion after 1 s "
                      << o.moved << " m");
     CHECK(o.penetration < 1e-3);
