@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "dynamics/joints/joint.h"
+#include "dynamics/time_stepping/contact_impulses.h"
 
 namespace tumble {
 namespace {
@@ -41,7 +42,7 @@ static_assert(sizeof kKindNames / sizeof kKindNames[0] == static_cast<int>(Fault
 
 FaultSettings FaultSettings::forModel(ContactModel model) {
   FaultSettings s;
-  s.energy_repaid_within = model == ContactModel::TimeStepping ? 1 : 0;
+  s.energy_repaid_within = model == ContactModel::TimeStepping ? kOwedBounceCarries + 1 : 0;
   return s;
 }
 

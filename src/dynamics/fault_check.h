@@ -35,8 +35,9 @@ struct FaultSettings {
   // returns what drift took; values measured on every scene, see energy_check.h).
   double energy_gain_share = 1e-3;
   double energy_drift_m = 1e-4;
-  // Steps within which a model may pay energy back (energy_check.h): 1 for the time-stepping
-  // model, whose bounces come one step late; 0 for the Baraff model.
+  // Steps within which a model may pay energy back (energy_check.h): for the time-stepping model
+  // the latest a landing's bounce may come (kOwedBounceCarries + 1 steps after the landing,
+  // time_stepping/contact_impulses.h); 0 for the Baraff model.
   int energy_repaid_within = 0;
 
   // The settings for a run of this contact model.

@@ -10,16 +10,6 @@
 #include "dynamics/joints/joint_impulses.h"
 
 namespace tumble {
-namespace {
-
-// How many steps a landing's bounce is carried while the contact stays short of touching (within
-// the margin, pressed by a normal impulse, its gap above the tolerance). One covers a landing that
-// rounding leaves a hair apart. Carried for ever, a steel ball landing at 11.5 m/s on a block and
-// then pressing on it a few micrometres apart was owed its bounce for 13 steps, and took 2.3 m/s
-// off the block it had long been riding with: 65 J from nowhere.
-constexpr int kOwedCarries = 1;
-
-}  // namespace
 
 void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
                             const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats) {
@@ -32,7 +22,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     const Contact& c = contacts[i];
     all[i] = &c;
     last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
-    owed[i] = last[i] && last[i]->landing_carried <= kOwedCarries ? last[i]->landing_speed : 0;
+    owed[i] = last[i] && last[i]->landing_carried <= kOwedBounceCarries ? last[i]->landing_speed : 0;
     const double gap = -c.depth;
     want[i] = -std::max(gap, 0.0) / dt;
     const double u = std::max(approach[i], owed[i]);
