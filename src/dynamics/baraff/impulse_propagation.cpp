@@ -242,15 +242,15 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island,
     if (pairs[k].approach >= -s.resting_speed_m_s) return;
     // An elastic pair impact whose lift-off a neighbour would turn back at once takes that
     // neighbour in (neighbour_turn_back.h); an inelastic one lifts nothing off.
-    const long merged = stats.merged_impacts;
+    bool grown = false;
     if (round < elastic_rounds)
-      resolveImpactWithNeighbours(world, pairs[k].points, neighbours.around(world, pairs[k].points), s,
-                                  min_bounce_speed, 1.0, settle, stats);
+      grown = resolveImpactWithNeighbours(world, pairs[k].points, neighbours.around(world, pairs[k].points), s,
+                                          min_bounce_speed, 1.0, settle, stats);
     else
       resolveImpact(world, pairs[k].points, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
     // A grown impact moved bodies beyond the pair's.
     for (PairImpact& p : pairs)
-      if (stats.merged_impacts != merged || sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
+      if (grown || sharesMovingBody(world, pairs[k], p)) p.approach = approachOf(world, p);
   }
   // Not settled within the cap: all the island's contacts at once, inelastic. This leaves no
   // contact approaching, and adds no energy.

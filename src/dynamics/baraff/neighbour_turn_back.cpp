@@ -74,13 +74,13 @@ std::vector<const Contact*> ContactNeighbours::around(const World& world,
   return out;
 }
 
-void resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
+bool resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
                                  const std::vector<const Contact*>& neighbours, const ContactSettings& s,
                                  double min_bounce_speed, double restitution_scale, const SettleRule& settle,
                                  ContactSolveStats& stats) {
   if (neighbours.empty()) {
     resolveImpact(world, points, min_bounce_speed, restitution_scale, s.restitution_law, stats, &settle);
-    return;
+    return false;
   }
   std::vector<const Contact*> all = points;
   all.insert(all.end(), neighbours.begin(), neighbours.end());
@@ -90,13 +90,13 @@ void resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>
   for (const Contact* c : set) vn_before.push_back(normalVelocity(world, *c));
   for (int growth = 0;; ++growth) {
     resolveImpact(world, set, min_bounce_speed, restitution_scale, s.restitution_law, stats, &settle);
-    if (growth == kMaxGrowths) return;
+    if (growth == kMaxGrowths) return true;
     // Which neighbours close is judged on the velocities the impact left, from where it started.
     const std::vector<const Contact*> close =
         closing(world, neighbours, set, s, settle.within_s, settle.slack_m_s);
     if (close.empty() ||
         !turnsBack(world, set, vn_before, close, min_bounce_speed, s.restitution_law, settle.slack_m_s, stats))
-      return;
+      return growth > 0;
     start.restore(world);
     for (const Contact* c : close) {
       set.push_back(c);

@@ -43,8 +43,8 @@ class ContactNeighbours {
 // Resolves the impact on `points` (resolveImpact, restitution as given), grown while the lift-offs
 // it leaves would be turned back at once by contacts in `neighbours` (see above): those join it
 // and the impact is solved again from the state before it. `within_s`: how soon a gap must close
-// to count (the settle rule's time).
-void resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
+// to count (the settle rule's time). Returns whether it grew (bodies beyond the pair's moved).
+bool resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
                                  const std::vector<const Contact*>& neighbours, const ContactSettings& s,
                                  double min_bounce_speed, double restitution_scale, const SettleRule& settle,
                                  ContactSolveStats& stats);
