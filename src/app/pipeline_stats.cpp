@@ -32,6 +32,9 @@ void printPipelineStats(const Pipeline& pipeline) {
   const ContactDetector::Work& w = pipeline.detectionWork();
   std::fprintf(stderr, "  work: bodies integrated %ld, broad-phase sweeps %ld, frictional contacts found %ld\n",
                c.bodies_integrated, w.broad_phase_runs, w.frictional_contacts);
+  if (w.manifolds_built + w.manifolds_reused > 0)
+    std::fprintf(stderr, "  kept manifolds: %ld pair manifolds reused, %ld built by the narrow phase\n",
+                 w.manifolds_reused, w.manifolds_built);
   const SleepCounters& s = pipeline.sleepCounters();
   std::fprintf(stderr, "  sleeping: %ld islands fell asleep, %ld woke; %d bodies asleep at the end\n",
                s.islands_slept, s.islands_woken, s.asleep_now);

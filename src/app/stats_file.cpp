@@ -37,7 +37,9 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
         {"iterative_fallbacks", k.iterative_fallbacks}, {"sweeps", k.sweeps},
         {"unconverged_sweeps", k.unconverged_sweeps}, {"active_set_steps", k.active_set_steps},
         {"merged_impacts", k.merged_impacts},
-        {"frictional_found", pipeline.detectionWork().frictional_contacts}}},
+        {"frictional_found", pipeline.detectionWork().frictional_contacts},
+        {"manifolds_reused", pipeline.detectionWork().manifolds_reused},
+        {"manifolds_built", pipeline.detectionWork().manifolds_built}}},
       {"sleep", {{"islands_slept", sleep.islands_slept}, {"islands_woken", sleep.islands_woken},
                  {"asleep_at_end", sleep.asleep_now}}},
       // The drift is the most the total energy stood above its start, as a share of the energy in

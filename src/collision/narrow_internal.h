@@ -32,6 +32,10 @@ constexpr double kAbsTolerance = 1e-3;
 // kept by the tolerances above that misses it gives way to the least-penetration axis
 // (narrow_phase.cpp, agreesWithSat).
 constexpr double kDepthAgreement = 1e-9;
+// Faces whose outward normals (B's negated) agree to within about 0.8 degrees rest face on face:
+// their contact normal stays the reference face's (and only such manifolds are kept between
+// steps, kept_manifold.h).
+constexpr double kOppositeFaces = 0.9999;
 
 // One piece as seen in the working frame (the frame of the piece with more vertices; the other is
 // transformed into it, so only the smaller one pays for the transform).

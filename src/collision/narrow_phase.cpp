@@ -81,9 +81,6 @@ double cachedSeparation(const PairView& p, const SatCache& c) {
   return s;
 }
 
-// Faces whose outward normals (B's negated) agree to within about 0.8 degrees rest face on face:
-// their contact normal stays the reference face's.
-constexpr double kOppositeFaces = 0.9999;
 // A face counts as the larger of two when its area is larger by more than this share.
 constexpr double kLargerFace = 1e-6;
 
@@ -279,7 +276,7 @@ void shareEdgeNormal(const SatResult& r, const PairView& p, const Choice& c, Con
   const Eigen::Vector3d na = p.a.normals[r.face_a.index_a], nb = -p.b.normals[r.face_b.index_b];
   // Opposite faces (resting face on face) keep the reference face's normal; faces more than a
   // right angle apart do not meet at a shared edge line.
-  if (na.dot(nb) > kOppositeFaces || na.dot(nb) < 0) return;
+  if (na.dot(nb) > narrow::kOppositeFaces || na.dot(nb) < 0) return;
   const Eigen::Vector3d n = (na + nb).normalized();
   // The touching features are two parallel edges (a card's ridge edge on the other's): the contact
   // is their overlap, a point at each end. Clipping one face against the other cannot give it

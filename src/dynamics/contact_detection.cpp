@@ -80,7 +80,7 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
 
 void ContactDetector::detect(const World& world, const ContactSettings& settings,
                              std::vector<Contact>& out, std::vector<PiecePair>* pairs,
-                             const std::vector<double>* reach) {
+                             const std::vector<double>* reach, bool reuse) {
   out.clear();
   if (pairs) pairs->clear();
   if (!has_pairs_) return;
@@ -95,25 +95,72 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     ++work_.broad_phase_runs;
   }
   auto reachOf = [&](int body) { return reach ? (*reach)[body] : 0.0; };
+  const double slack = reuse ? kReuseSlack * settings.margin_m : 0.0;
   for (const ProxyPair& c : candidates_) {
     PiecePair key{c.a, c.b};
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
     if (joined(pa.body, pb.body)) continue;
     const double margin = settings.margin_m + reachOf(pa.body) + reachOf(pb.body);
-    if (collide(pa.hull, poses_[pa.body], pb.hull, poses_[pb.body], margin, caches_[key], manifold_))
-      addPairContacts(world, key, manifold_, out, pairs);
+    const bool found = slack > 0 && keeps(pa) && keeps(pb)
+                           ? keptPairManifold(key, margin, slack)
+                           : collide(pa.hull, poses_[pa.body], pb.hull, poses_[pb.body], margin, caches_[key].sat, manifold_);
+    if (found) addPairContacts(world, key, manifold_, out, pairs);
   }
-  for (int plane : planes_) {
-    double height = world.bodies[plane].x.z();
+  if (slack > 0) ground_kept_.resize(planes_.size() * pieces_.size());
+  for (std::size_t g = 0; g < planes_.size(); ++g) {
+    const int plane = planes_[g];
+    const double height = world.bodies[plane].x.z();
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
       const RigidBody& body = world.bodies[pieces_[i].body];
       if (body.is_static || joined(pieces_[i].body, plane)) continue;
       const double margin = settings.margin_m + reachOf(pieces_[i].body);
-      if (collideGround(*pieces_[i].shape, poses_[pieces_[i].body], height, margin, manifold_))
-        addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
+      const bool found = slack > 0 && keeps(pieces_[i])
+                             ? keptGroundManifold(ground_kept_[g * pieces_.size() + i], static_cast<int>(i),
+                                                  height, margin, slack)
+                             : collideGround(*pieces_[i].shape, poses_[pieces_[i].body], height, margin, manifold_);
+      if (found) addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
     }
   }
+}
+
+bool ContactDetector::keeps(const Piece& piece) {
+  // A smooth piece touches at a point that rolls over its surface: no material point to keep.
+  return !piece.shape->smooth();
+}
+
+bool ContactDetector::keptPairManifold(const PiecePair& key, double margin, double slack) {
+  const Piece& pa = pieces_[key.piece_a];
+  const Piece& pb = pieces_[key.piece_b];
+  const Eigen::Isometry3d& pose_a = poses_[pa.body];
+  const Eigen::Isometry3d& pose_b = poses_[pb.body];
+  PairMemory& memory = caches_[key];
+  const Eigen::Isometry3d rel = pose_a.inverse(Eigen::Isometry) * pose_b;
+  KeptManifold& kept = memory.kept;
+  if (kept.valid && keptDrift(kept, rel, pb.hull.radius) + margin <= kept.margin_m + slack) {
+    ++work_.manifolds_reused;
+    return reuseManifold(kept, pose_a, pose_b, ReferenceIs::A, margin, manifold_);
+  }
+  ++work_.manifolds_built;
+  const bool found = collide(pa.hull, pose_a, pb.hull, pose_b, margin, memory.sat, manifold_);
+  keepManifold(manifold_, found, pose_a, pose_b, rel, ReferenceIs::A, pa.shape, *pb.shape, margin, kept);
+  return found;
+}
+
+bool ContactDetector::keptGroundManifold(KeptManifold& kept, int piece, double height, double margin,
+                                         double slack) {
+  const Piece& p = pieces_[piece];
+  const Eigen::Isometry3d& pose = poses_[p.body];
+  // The ground's frame is the world: the piece's pose is its pose relative to the ground.
+  const Eigen::Isometry3d world = Eigen::Isometry3d::Identity();
+  if (kept.valid && keptDrift(kept, pose, p.hull.radius) + margin <= kept.margin_m + slack) {
+    ++work_.manifolds_reused;
+    return reuseManifold(kept, world, pose, ReferenceIs::B, margin, manifold_);
+  }
+  ++work_.manifolds_built;
+  const bool found = collideGround(*p.shape, pose, height, margin, manifold_);
+  keepManifold(manifold_, found, world, pose, pose, ReferenceIs::B, nullptr, *p.shape, margin, kept);
+  return found;
 }
 
 void ContactDetector::setFixed(int body, bool fixed) {
@@ -152,7 +199,7 @@ void ContactDetector::pairContacts(const World& world, const PiecePair& pair, do
     found = collideGround(*pa.shape, pose_a, world.bodies[~pair.piece_b].x.z(), margin_m, manifold_);
   } else {
     const Piece& pb = pieces_[pair.piece_b];
-    found = collide(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), margin_m, caches_[pair], manifold_);
+    found = collide(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), margin_m, caches_[pair].sat, manifold_);
   }
   if (found) addPairContacts(world, pair, manifold_, out, nullptr);
 }
@@ -177,7 +224,7 @@ double ContactDetector::maxDepth(const World& world, const std::vector<PiecePair
       depth = -groundSeparation(*pa.shape, pose_a, world.bodies[~pair.piece_b].x.z());
     } else {
       const Piece& pb = pieces_[pair.piece_b];
-      depth = -separation(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), caches_[pair]);
+      depth = -separation(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), caches_[pair].sat);
     }
     deepest = std::max(deepest, depth);
   }

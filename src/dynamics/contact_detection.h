@@ -11,6 +11,7 @@
 
 #include "collision/broad_phase.h"
 #include "collision/collision_hull.h"
+#include "collision/kept_manifold.h"
 #include "collision/narrow_phase.h"
 #include "dynamics/contact.h"
 #include "dynamics/world.h"
@@ -32,8 +33,19 @@ class ContactDetector {
   // deterministic order; `pairs` (optional) receives the piece pair of each contact. `reach`
   // (optional, m per body) widens the margin of each pair by how far its two bodies can travel:
   // the time-stepping model's speculative contacts, without widening every pair by the fastest.
+  // `reuse` (the time-stepping model's choice, ContactSettings::reuse_manifolds) keeps each
+  // polyhedral pair's manifold and reuses it while the pair has moved less than kReuseSlack of
+  // the margin (collision/kept_manifold.h); off, every pair goes through the narrow phase.
   void detect(const World& world, const ContactSettings& settings, std::vector<Contact>& out,
-              std::vector<PiecePair>* pairs = nullptr, const std::vector<double>* reach = nullptr);
+              std::vector<PiecePair>* pairs = nullptr, const std::vector<double>* reach = nullptr,
+              bool reuse = false);
+  // A kept manifold is reused while its pair has moved (and its margin grown) by less than this
+  // share of the base margin since the narrow phase built it: 0.1 mm of the 1 mm margin. What it
+  // may miss is a feature that was beyond the margin then: such a feature is still farther than
+  // the margin less the slack, and within a step it closes no more than the reach the margin
+  // holds beyond the base margin, so it ends the step 0.9 mm apart at least: nothing it misses
+  // can touch before the narrow phase runs again.
+  static constexpr double kReuseSlack = 0.1;
   // The largest penetration depth among the given piece pairs in the world's current state
   // (negative when all are separated): what bisection evaluates.
   double maxDepth(const World& world, const std::vector<PiecePair>& pairs);
@@ -78,6 +90,8 @@ class ContactDetector {
   struct Work {
     long broad_phase_runs = 0;      // sweeps of the broad phase (none with one moving body alone)
     long frictional_contacts = 0;   // contacts with a friction coefficient above zero
+    long manifolds_built = 0;       // pairs through the narrow phase while reusing (detect(reuse))
+    long manifolds_reused = 0;      // pairs whose kept manifold was reused instead
   };
   const Work& work() const { return work_; }
   // The thinnest width of any piece (m): infinity when there are none.
@@ -91,16 +105,28 @@ class ContactDetector {
     CollisionHull hull;
     double thickness;   // m, the smallest extent along a face normal
   };
+  static bool keeps(const Piece& piece);   // whether a piece's manifolds may be kept
   void updateBoxes(double margin, const std::vector<double>* reach);   // from poses_
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
                        std::vector<Contact>& out, std::vector<PiecePair>* pairs) const;
+  // The manifold of two pieces or of a piece and the ground within `margin`, from the kept one
+  // where it may be reused, else from the narrow phase (then kept); false when none.
+  bool keptPairManifold(const PiecePair& pair, double margin, double slack);
+  bool keptGroundManifold(KeptManifold& kept, int piece, double height, double margin, double slack);
+  // What is kept per pair of pieces between steps: the narrow phase's cached axis, and the
+  // manifold when detection reuses them.
+  struct PairMemory {
+    SatCache sat;
+    KeptManifold kept;
+  };
 
   std::vector<Piece> pieces_;
   std::vector<Eigen::Isometry3d> poses_;         // per body, as of the current detect()
   std::vector<int> planes_;                      // body indices of ground planes
   SweepAndPrune broad_;
   std::vector<ProxyPair> candidates_;
-  std::map<PiecePair, SatCache> caches_;         // ordered: deterministic iteration
+  std::map<PiecePair, PairMemory> caches_;       // ordered: deterministic iteration
+  std::vector<KeptManifold> ground_kept_;        // per (plane, piece), when reusing
   // The tunnelling bound's own broad phase and axis caches: its boxes are grown by each body's
   // reach, and it leaves the narrow phase's cached features (its face hysteresis) untouched.
   SweepAndPrune near_broad_;

@@ -89,6 +89,10 @@ struct ContactSettings {
   // keeps a stack of 20 boxes (80 contacts, 240 rows) exact.
   int max_direct_rows = 256;
   RestitutionLaw restitution_law = RestitutionLaw::Newton;   // Baraff impacts: what e means
+  // Time stepping: a pair of polyhedral pieces (or one and the ground) keeps its manifold between
+  // steps and reuses it, its depths refreshed, while the pair has moved less than a tenth of the
+  // margin (collision/kept_manifold.h). The Baraff and penalty models always run the narrow phase.
+  bool reuse_manifolds = true;
 };
 
 struct SleepSettings {

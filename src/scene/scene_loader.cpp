@@ -119,6 +119,7 @@ void readSimulation(ObjectReader& in, SimulationSpec& sim, int fps, int frames) 
       readChoice(in, "time_of_impact", "bisection", {"bisection", "regula_falsi"}) == "regula_falsi";
   step.contact.max_direct_rows = in.integer("pivoting_max_rows", step.contact.max_direct_rows, 0, 100000);
   step.contact.tolerance_m = in.number("contact_tolerance_m", step.contact.tolerance_m, {1e-9, 1e-2});
+  step.contact.reuse_manifolds = in.boolean("reuse_manifolds", step.contact.reuse_manifolds);
   const std::string model = readChoice(in, "contact_model", "auto", {"auto", "baraff", "time_stepping", "penalty"});
   step.model = model == "baraff"          ? ContactModel::Baraff
                : model == "penalty"       ? ContactModel::Penalty

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "collision/contact_manifold.h"
 
 namespace tumble::test {
 
@@ -20,5 +23,12 @@ inline Eigen::Quaterniond rotation(double angle_rad, const Eigen::Vector3d& axis
 }
 
 inline bool allFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+// The deepest point of a manifold (m; -infinity when it has none): what decides whether a pair touches.
+inline double deepestDepth(const ContactManifold& m) {
+  double d = -INFINITY;
+  for (const ContactPoint& p : m.points) d = std::max(d, p.depth);
+  return d;
+}
 
 }  // namespace tumble::test

@@ -14,15 +14,10 @@
 
 using namespace tumble;
 using Eigen::Vector3d;
+using test::deepestDepth;
 using test::pose;
 
 namespace {
-
-double deepestDepth(const ContactManifold& m) {
-  double d = -INFINITY;
-  for (const ContactPoint& p : m.points) d = std::max(d, p.depth);
-  return d;
-}
 
 // The gem of scenes/pile.json (assets/gem.ply in its principal frame, rounded to 1 um).
 ConvexPiece pileGem() {

@@ -16,7 +16,8 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   if (shared.has_contacts) {
     auto detect = [&] {
       bodyReach(world, shared.body_radius, dt, reach_);
-      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_);
+      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_,
+                             settings.contact.reuse_manifolds);
       keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
                             settings.contact.tolerance_m);
       addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,

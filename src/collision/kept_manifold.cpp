@@ -1,0 +1,122 @@
+#include "collision/kept_manifold.h"
+
+#include <algorithm>
+
+#include "collision/narrow_internal.h"
+
+namespace tumble {
+
+double keptDrift(const KeptManifold& k, const Eigen::Isometry3d& rel, double radius_m) {
+  const double moved = (rel.translation() - k.rel.translation()).norm();
+  const double turned = (rel.linear() - k.rel.linear()).norm();   // Frobenius >= spectral norm
+  return moved + turned * radius_m;
+}
+
+namespace {
+
+// Whether p (the piece's body frame) is one of its vertices, to rounding of the transforms that
+// took it to world and back.
+// Whether n (the piece's body frame, unit) is the outward normal of one of its faces.
+bool isFaceNormal(const ConvexPiece* piece, const Eigen::Vector3d& n) {
+  if (!piece) return false;
+  for (const Eigen::Vector3d& f : piece->face_normals)
+    if ((f - n).squaredNorm() <= 1e-18) return true;
+  return false;
+}
+
+// Whether the piece has a face whose outward normal is within the narrow phase's face-on-face
+// angle of `out` (its body frame, unit).
+bool hasFaceAlong(const ConvexPiece& piece, const Eigen::Vector3d& out) {
+  for (const Eigen::Vector3d& f : piece.face_normals)
+    if (f.dot(out) > narrow::kOppositeFaces) return true;
+  return false;
+}
+
+bool atVertex(const ConvexPiece* piece, const Eigen::Vector3d& p) {
+  if (!piece) return false;
+  const double tol = 1e-9 * (1 + p.norm());
+  for (const Eigen::Vector3d& v : piece->vertices)
+    if ((v - p).squaredNorm() <= tol * tol) return true;
+  return false;
+}
+
+}  // namespace
+
+void keepManifold(const ContactManifold& m, bool found, const Eigen::Isometry3d& pose_ref,
+                  const Eigen::Isometry3d& pose_moving, const Eigen::Isometry3d& rel, ReferenceIs ref,
+                  const ConvexPiece* ref_piece, const ConvexPiece& moving_piece, double margin_m,
+                  KeptManifold& k) {
+  k.valid = false;
+  const int n = found ? static_cast<int>(m.points.size()) : 0;
+  if (n > KeptManifold::kMaxPoints) return;
+  // One or two points between two pieces (an edge on a face, two edges crossing, the closest
+  // points of pieces apart) stand for one feature pair only: a piece rocking about them brings
+  // other features within the margin that were within it, unreported, when it was built. The
+  // ground's points are every vertex within the margin, and three or more points a face's.
+  if (ref_piece && (n == 1 || n == 2)) return;
+  k.rel = rel;
+  k.margin_m = margin_m;
+  k.count = n;
+  k.closest_points = found && m.closest_points;
+  if (n > 0) {
+    const Eigen::Isometry3d to_ref = pose_ref.inverse(Eigen::Isometry);
+    const Eigen::Isometry3d to_moving = pose_moving.inverse(Eigen::Isometry);
+    // The normal points from A to B: outward from A's face, into B's.
+    const double out_of_ref = ref == ReferenceIs::A ? 1.0 : -1.0;
+    const Eigen::Vector3d on_ref = to_ref.linear() * m.normal, on_moving = to_moving.linear() * m.normal;
+    // Between two pieces, a face resting on a face: the normal is one piece's face normal, and
+    // the other piece has a face turned against it (within the narrow phase's face-on-face
+    // angle). A face meeting the other piece at an angle (a card's thin edge face against the
+    // face of the card it leans on) is where the narrow phase's choice turns as the pieces
+    // settle: a tent's ridge went from one card's face normal to the bisector of the two.
+    if (!ref_piece) {
+      k.normal = on_ref;   // the ground's
+      k.normal_on_moving = false;
+    } else if (isFaceNormal(ref_piece, out_of_ref * on_ref) && hasFaceAlong(moving_piece, -out_of_ref * on_moving)) {
+      k.normal = on_ref;
+      k.normal_on_moving = false;
+    } else if (isFaceNormal(&moving_piece, -out_of_ref * on_moving) && hasFaceAlong(*ref_piece, out_of_ref * on_ref)) {
+      k.normal = on_moving;
+      k.normal_on_moving = true;
+    } else {
+      return;
+    }
+    for (int i = 0; i < n; ++i) {
+      const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+      // A's surface lies depth/2 along +normal of the midpoint, B's depth/2 against it.
+      const Eigen::Vector3d on_a = p.position + 0.5 * p.depth * m.normal;
+      const Eigen::Vector3d on_b = p.position - 0.5 * p.depth * m.normal;
+      const bool a_is_ref = ref == ReferenceIs::A;
+      k.on_ref[i] = to_ref * (a_is_ref ? on_a : on_b);
+      k.on_moving[i] = to_moving * (a_is_ref ? on_b : on_a);
+      k.feature[i] = p.feature;
+      if (n > 1 && !atVertex(ref_piece, k.on_ref[i]) && !atVertex(&moving_piece, k.on_moving[i])) return;
+    }
+  }
+  k.valid = true;
+}
+
+bool reuseManifold(const KeptManifold& k, const Eigen::Isometry3d& pose_ref,
+                   const Eigen::Isometry3d& pose_moving, ReferenceIs ref, double margin_m,
+                   ContactManifold& out) {
+  out.points.clear();
+  if (k.count == 0) return false;
+  out.normal = (k.normal_on_moving ? pose_moving.linear() : pose_ref.linear()) * k.normal;
+  out.closest_points = k.closest_points;
+  for (int i = 0; i < k.count; ++i) {
+    const Eigen::Vector3d p_ref = pose_ref * k.on_ref[i];
+    const Eigen::Vector3d p_moving = pose_moving * k.on_moving[i];
+    const Eigen::Vector3d& on_a = ref == ReferenceIs::A ? p_ref : p_moving;
+    const Eigen::Vector3d& on_b = ref == ReferenceIs::A ? p_moving : p_ref;
+    ContactPoint p;
+    p.depth = (on_a - on_b).dot(out.normal);
+    if (p.depth < -margin_m) continue;
+    p.position = 0.5 * (on_a + on_b);
+    p.feature = k.feature[i];
+    out.points.push_back(p);
+  }
+  return !out.points.empty();
+}
+
+
+}  // namespace tumble
