@@ -36,16 +36,20 @@ struct BenchScene {
   double duration = 2;                  // s simulated (before any cut)
   bool ccd = false;                     // engines with continuous collision detection enable it
   std::vector<double> dts;              // s: the steps this scene is swept over
+  double bin_half_m = 5;                // S6: the bin's interior is [-bin_half_m, bin_half_m]^2
 };
 
 // Scene ids accepted on the command line, in report order: S1 S2a S2b S3 S4 S5 S6_100 S6_300
-// S6_1000 S7 S8 S8ccd.
+// S6_1000 S6_10000 S7 S8 S8ccd.
 std::vector<std::string> allSceneIds();
 // Throws std::invalid_argument for an unknown id. `dts` is used unless the scene fixes its own
 // (the piles run at 1/240 s only, as docs/bench/scenes.md says).
 BenchScene makeScene(const std::string& id, const std::vector<double>& dts);
 // S6: N cubes of 0.5 m dropped in layers into the walled bin (docs/bench/scenes.md gives every
 // coordinate and the random orientations: std::mt19937(12345), four N(0,1) draws per cube, w x y z).
+// Up to 1000 cubes the bin is 10 m wide and the layers at most 10 x 10; beyond, the 1000-cube pile
+// is scaled out: 10 layers of k x k, k = ceil(sqrt(N / 10)), in a bin whose interior is k m wide
+// (k = 32 for 10 000 cubes: [-16, 16]^2).
 BenchScene makePile(int n);
 
 }  // namespace tumble::bench

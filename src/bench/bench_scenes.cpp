@@ -61,24 +61,30 @@ BenchScene tunnel(const std::string& id, bool ccd, const std::vector<double>& dt
 }  // namespace
 
 std::vector<std::string> allSceneIds() {
-  return {"S1", "S2a", "S2b", "S3", "S4", "S5", "S6_100", "S6_300", "S6_1000", "S7", "S8", "S8ccd"};
+  return {"S1", "S2a", "S2b", "S3", "S4", "S5", "S6_100", "S6_300", "S6_1000", "S6_10000", "S7", "S8", "S8ccd"};
 }
 
 BenchScene makePile(int n) {
   BenchScene s = base("S6_" + std::to_string(n), "pile of " + std::to_string(n) + " boxes",
                       SceneKind::Pile, 5, {1.0 / 240});
-  // Bin: four walls 0.5 m thick and 3 m high around the interior [-5, 5]^2.
-  const Vector3d wall_x(0.25, 5.5, 1.5), wall_y(5.5, 0.25, 1.5);
+  // Up to 1000 cubes: layers of at most 10 x 10 in a bin of interior [-5, 5]^2. Beyond, the
+  // 1000-cube pile scaled out: 10 layers of k x k in a bin widened with the layers, so a larger
+  // pile has the same height, the same spacing and the same share of cubes near a wall.
+  const int k = n <= 1000 ? std::min(10, static_cast<int>(std::ceil(std::sqrt(n / 4.0))))
+                          : static_cast<int>(std::ceil(std::sqrt(n / 10.0)));
+  s.bin_half_m = n <= 1000 ? 5.0 : 0.5 * k;
+  // Bin: four walls 0.5 m thick and 3 m high around the interior.
+  const double h = s.bin_half_m;
+  const Vector3d wall_x(0.25, h + 0.5, 1.5), wall_y(h + 0.5, 0.25, 1.5);
   for (double side : {-1.0, 1.0}) {
     BoxBody a, b;
     a.half_extents = wall_x;
-    a.x = {side * 5.25, 0, 1.5};
+    a.x = {side * (h + 0.25), 0, 1.5};
     b.half_extents = wall_y;
-    b.x = {0, side * 5.25, 1.5};
+    b.x = {0, side * (h + 0.25), 1.5};
     s.walls.push_back(a);
     s.walls.push_back(b);
   }
-  const int k = std::min(10, static_cast<int>(std::ceil(std::sqrt(n / 4.0))));
   std::mt19937 rng(12345);
   std::normal_distribution<double> normal;
   for (int i = 0; i < n; ++i) {

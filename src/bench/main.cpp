@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
   std::filesystem::path docs_dir, plot_from;
   CLI::App app{"tumble-bench: wall time per simulated second against error, tumble and its peers"};
   app.add_flag("--quick", o.quick, "smoke test: dt 1/60 and 1/240, short durations, one run per point");
-  app.add_option("--scenes", o.scenes, "scene ids (S1 S2a S2b S3 S4 S5 S6_100 S6_300 S6_1000 S7 S8 S8ccd)")->delimiter(',');
+  app.add_option("--scenes", o.scenes, "scene ids (S1 S2a S2b S3 S4 S5 S6_100 S6_300 S6_1000 S6_10000 S7 S8 S8ccd)")->delimiter(',');
   app.add_option("--settings", o.settings, "engine settings to run (see --list); named ones run on every scene")->delimiter(',');
   app.add_option("--hz", o.hz, "steps per second to sweep (default 60,120,240,480,1000)")->delimiter(',');
   app.add_option("--reps", o.run.reps, "fresh runs per point; the median time is reported")->check(CLI::Range(1, 100));

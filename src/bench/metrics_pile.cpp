@@ -16,11 +16,12 @@ class Pile : public MetricCollector {
 
   std::vector<Metric> finish() override {
     int escaped = 0, below = 0, outside = 0;
+    const double half = scene_.bin_half_m;
     for (const BodyState& b : last_) {
       const double reach = std::max(std::abs(b.x.x()), std::abs(b.x.y()));
-      if (reach > 5 || b.x.z() < 0) ++escaped;          // centre left the interior [-5, 5]^2
+      if (reach > half || b.x.z() < 0) ++escaped;       // centre left the interior [-half, half]^2
       if (b.x.z() < 0) ++below;                         // fell through the floor
-      if (reach > 5.5) ++outside;                       // beyond a wall's outer face
+      if (reach > half + 0.5) ++outside;                // beyond a wall's outer face
     }
     return {{"max_pen_end", scenePenetration(scene_, last_)},
             {"escaped", static_cast<double>(escaped)},
