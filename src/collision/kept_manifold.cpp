@@ -1,7 +1,5 @@
 #include "collision/kept_manifold.h"
 
-#include <algorithm>
-
 #include "collision/narrow_internal.h"
 
 namespace tumble {
@@ -14,8 +12,6 @@ double keptDrift(const KeptManifold& k, const Eigen::Isometry3d& rel, double rad
 
 namespace {
 
-// Whether p (the piece's body frame) is one of its vertices, to rounding of the transforms that
-// took it to world and back.
 // Whether n (the piece's body frame, unit) is the outward normal of one of its faces.
 bool isFaceNormal(const ConvexPiece* piece, const Eigen::Vector3d& n) {
   if (!piece) return false;
@@ -32,6 +28,8 @@ bool hasFaceAlong(const ConvexPiece& piece, const Eigen::Vector3d& out) {
   return false;
 }
 
+// Whether p (the piece's body frame) is one of its vertices, to rounding of the transforms that
+// took it to world and back.
 bool atVertex(const ConvexPiece* piece, const Eigen::Vector3d& p) {
   if (!piece) return false;
   const double tol = 1e-9 * (1 + p.norm());
@@ -57,7 +55,6 @@ void keepManifold(const ContactManifold& m, bool found, const Eigen::Isometry3d&
   k.rel = rel;
   k.margin_m = margin_m;
   k.count = n;
-  k.closest_points = found && m.closest_points;
   if (n > 0) {
     const Eigen::Isometry3d to_ref = pose_ref.inverse(Eigen::Isometry);
     const Eigen::Isometry3d to_moving = pose_moving.inverse(Eigen::Isometry);
@@ -102,7 +99,7 @@ bool reuseManifold(const KeptManifold& k, const Eigen::Isometry3d& pose_ref,
   out.points.clear();
   if (k.count == 0) return false;
   out.normal = (k.normal_on_moving ? pose_moving.linear() : pose_ref.linear()) * k.normal;
-  out.closest_points = k.closest_points;
+  out.closest_points = false;   // a closest-points manifold has one point: never kept
   for (int i = 0; i < k.count; ++i) {
     const Eigen::Vector3d p_ref = pose_ref * k.on_ref[i];
     const Eigen::Vector3d p_moving = pose_moving * k.on_moving[i];
@@ -117,6 +114,5 @@ bool reuseManifold(const KeptManifold& k, const Eigen::Isometry3d& pose_ref,
   }
   return !out.points.empty();
 }
-
 
 }  // namespace tumble

@@ -49,7 +49,6 @@ struct KeptManifold {
   double margin_m = 0;                                          // the margin it was built with
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // in the frame of the piece whose face it is
   bool normal_on_moving = false;                        // that piece: the moving one, else the reference
-  bool closest_points = false;
   int count = 0;                                                // 0: nothing within margin_m
   std::array<Eigen::Vector3d, kMaxPoints> on_ref, on_moving;    // surface points, own frames
   std::array<std::uint32_t, kMaxPoints> feature{};
@@ -78,6 +77,5 @@ void keepManifold(const ContactManifold& m, bool found, const Eigen::Isometry3d&
 bool reuseManifold(const KeptManifold& k, const Eigen::Isometry3d& pose_ref,
                    const Eigen::Isometry3d& pose_moving, ReferenceIs ref, double margin_m,
                    ContactManifold& out);
-
 
 }  // namespace tumble
