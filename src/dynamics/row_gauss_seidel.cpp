@@ -25,7 +25,6 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
                                           const Eigen::VectorXd& start) {
   const int n = static_cast<int>(rows.size());
   RowGaussSeidelResult out;
-  out.f = Eigen::VectorXd::Zero(n);
   if (n == 0) {
     out.converged = true;
     return out;
@@ -38,13 +37,19 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
   thread_local std::vector<Eigen::Matrix3d> inv_inertia;
   thread_local std::vector<char> used;   // all zero between calls
   thread_local std::vector<int> island_bodies;
-  thread_local std::vector<Row> data;
-  thread_local std::vector<Eigen::Vector3d> lin, ang;
+  thread_local std::vector<Row> data_buffer;
+  thread_local std::vector<Eigen::Vector3d> lin_buffer, ang_buffer;
   const std::size_t bodies = world.bodies.size();
   inv_inertia.resize(bodies);
   used.resize(bodies, 0);
-  lin.resize(bodies);
-  ang.resize(bodies);
+  lin_buffer.resize(bodies);
+  ang_buffer.resize(bodies);
+  data_buffer.resize(n);
+  // Plain pointers for the sweeps: through the thread-local vectors the compiler reloaded each
+  // one's address from thread storage on every row.
+  Eigen::Vector3d* const lin = lin_buffer.data();
+  Eigen::Vector3d* const ang = ang_buffer.data();
+  Row* const data = data_buffer.data();
   island_bodies.clear();
   for (const ContactRow& r : rows)
     for (int k : {r.a, r.b})
@@ -57,7 +62,6 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     ang[k].setZero();
   }
 
-  data.resize(n);
   for (int i = 0; i < n; ++i) {
     const ContactRow& r = rows[i];
     Row& d = data[i];
@@ -73,7 +77,7 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     double diag = d.inv_mass_a + d.inv_mass_b + d.arm_a.dot(d.ang_a) + d.arm_b.dot(d.ang_b);
     d.inv_diag = diag > 0 ? 1 / diag : 0;   // a row between two static bodies takes no force
   }
-  auto push = [&](const Row& d, double df) {
+  auto push = [lin, ang](const Row& d, double df) {
     lin[d.a] -= (df * d.inv_mass_a) * d.dir;
     lin[d.b] += (df * d.inv_mass_b) * d.dir;
     ang[d.a] += df * d.ang_a;
@@ -82,29 +86,34 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
   if (start.size() == n) {
     out.f = start;
     for (int i = 0; i < n; ++i) push(data[i], start[i]);
+  } else {
+    out.f = Eigen::VectorXd::Zero(n);
   }
+  double* const f_of = out.f.data();
+  const double* const b_of = b.data();
+  const RowLimit* const limit_of = limits.data();
   const double stop = settings.tolerance * (b.lpNorm<Eigen::Infinity>() + 1e-300);
   for (out.sweeps = 1; out.sweeps <= settings.max_sweeps; ++out.sweeps) {
     double largest_change = 0;
     for (int i = 0; i < n; ++i) {
       const Row& d = data[i];
-      const RowLimit& lim = limits[i];
-      double w = b[i] + d.dir.dot(lin[d.b] - lin[d.a]) + d.arm_a.dot(ang[d.a]) + d.arm_b.dot(ang[d.b]);
-      double f = out.f[i], next = f;
+      const RowLimit& lim = limit_of[i];
+      double w = b_of[i] + d.dir.dot(lin[d.b] - lin[d.a]) + d.arm_a.dot(ang[d.a]) + d.arm_b.dot(ang[d.b]);
+      double f = f_of[i], next = f;
       switch (lim.kind) {
         case RowLimit::Normal: next = std::max(0.0, f - w * d.inv_diag); break;
         case RowLimit::Static: {
-          double bound = lim.mu * out.f[lim.normal];
+          double bound = lim.mu * f_of[lim.normal];
           next = std::clamp(f - w * d.inv_diag, -bound, bound);
           break;
         }
         case RowLimit::Sliding:
-          next = std::clamp(f + (lim.target - w) * d.inv_diag, 0.0, lim.mu * out.f[lim.normal]);
+          next = std::clamp(f + (lim.target - w) * d.inv_diag, 0.0, lim.mu * f_of[lim.normal]);
           break;
       }
       double df = next - f;
       if (df == 0) continue;
-      out.f[i] = next;
+      f_of[i] = next;
       push(d, df);
       if (d.inv_diag > 0) largest_change = std::max(largest_change, std::abs(df) / d.inv_diag);
     }
