@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "base/error.h"
+#include "dynamics/parallel_for.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
 
@@ -36,6 +37,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->check(CLI::IsMember({"auto", "baraff", "time_stepping", "penalty"}));
   command.add_flag("--no-sleep", o.no_sleep,
                    "Never freeze bodies at rest: every body is simulated to the end (overrides simulation.step.sleep.enabled)");
+  command.add_option("--threads", o.threads,
+                     "Threads for the simulation's detection and contact solve; 0: every hardware thread. The "
+                     "motion is bit-identical at any count (default 1)")
+      ->check(CLI::NonNegativeNumber);
   command.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
   command.add_flag("-v,--verbose", o.verbose, "Print warnings in full and where the time went");
 }
@@ -80,6 +85,7 @@ Scene loadSceneWithOverrides(const SceneOptions& o) {
                                                          : ContactModel::Auto,
                     "--contact-model");
   if (o.no_sleep) scene.simulation.step.sleep.enabled = false;
+  scene.simulation.step.threads = resolveThreads(o.threads);
   if (o.time_scale) setTimeScale(scene, *o.time_scale);   // last: it divides the step the flags above set
   return scene;
 }

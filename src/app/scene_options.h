@@ -18,6 +18,7 @@ struct SceneOptions {
   std::string integrator;
   std::string contact_model;   // empty: the scene's
   bool no_sleep = false;        // --no-sleep: simulation.step.sleep.enabled = false
+  int threads = 1;              // --threads N: simulation threads, 0 every hardware thread
   std::optional<int> fps;
   std::optional<double> duration_s;
   std::optional<double> time_scale;   // --time-scale S: slow motion, S simulated seconds per clip second

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "collision/aabb.h"
+#include "dynamics/parallel_for.h"
 
 namespace tumble {
 
@@ -80,7 +81,7 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
 
 void ContactDetector::detect(const World& world, const ContactSettings& settings,
                              std::vector<Contact>& out, std::vector<PiecePair>* pairs,
-                             const std::vector<double>* reach, bool reuse) {
+                             const std::vector<double>* reach, bool reuse, int threads) {
   out.clear();
   if (pairs) pairs->clear();
   if (!has_pairs_) return;
@@ -96,37 +97,66 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
   }
   auto reachOf = [&](int body) { return reach ? (*reach)[body] : 0.0; };
   const double slack = reuse ? kReuseSlack * settings.margin_m : 0.0;
+  // The jobs, in the order their contacts are reported: pairs of pieces in the broad phase's order,
+  // then each ground plane against every piece. Each job's memory (cached axis, kept manifold) is
+  // its own, found here on this thread (the map may grow), so the jobs may run on any thread.
+  std::size_t count = 0;
+  auto nextJob = [&]() -> PairJob& {
+    if (count == jobs_.size()) jobs_.emplace_back();
+    return jobs_[count++];
+  };
   for (const ProxyPair& c : candidates_) {
-    PiecePair key{c.a, c.b};
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
     if (joined(pa.body, pb.body)) continue;
-    const double margin = settings.margin_m + reachOf(pa.body) + reachOf(pb.body);
+    PairJob& job = nextJob();
+    job.key = {c.a, c.b};
+    job.margin = settings.margin_m + reachOf(pa.body) + reachOf(pb.body);
     // Bodies that may travel more than the base margin in the step (falling, struck) drift out of
     // any kept manifold within a step or two: keeping theirs costs more than it saves (the falling
     // 10 000-box pile took 15 % longer when it did).
-    const bool slow = margin <= 2 * settings.margin_m;
-    const bool found = slack > 0 && slow && keeps(pa) && keeps(pb)
-                           ? keptPairManifold(key, margin, slack)
-                           : collide(pa.hull, poses_[pa.body], pb.hull, poses_[pb.body], margin, caches_[key].sat, manifold_);
-    if (found) addPairContacts(world, key, manifold_, out, pairs);
+    const bool slow = job.margin <= 2 * settings.margin_m;
+    job.keep = slack > 0 && slow && keeps(pa) && keeps(pb);
+    job.memory = &caches_[job.key];
+    job.ground_kept = nullptr;
   }
   if (slack > 0) ground_kept_.resize(planes_.size() * pieces_.size());
   for (std::size_t g = 0; g < planes_.size(); ++g) {
     const int plane = planes_[g];
-    const double height = world.bodies[plane].x.z();
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
       const RigidBody& body = world.bodies[pieces_[i].body];
       if (body.is_static || joined(pieces_[i].body, plane)) continue;
-      const double margin = settings.margin_m + reachOf(pieces_[i].body);
-      const bool slow = margin <= 2 * settings.margin_m;   // as for two pieces, above
-      const bool found = slack > 0 && slow && keeps(pieces_[i])
-                             ? keptGroundManifold(ground_kept_[g * pieces_.size() + i], static_cast<int>(i),
-                                                  height, margin, slack)
-                             : collideGround(*pieces_[i].shape, poses_[pieces_[i].body], height, margin, manifold_);
-      if (found) addPairContacts(world, {static_cast<int>(i), ~plane}, manifold_, out, pairs);
+      PairJob& job = nextJob();
+      job.key = {static_cast<int>(i), ~plane};
+      job.margin = settings.margin_m + reachOf(pieces_[i].body);
+      const bool slow = job.margin <= 2 * settings.margin_m;   // as for two pieces, above
+      job.keep = slack > 0 && slow && keeps(pieces_[i]);
+      job.memory = nullptr;
+      job.ground_kept = slack > 0 ? &ground_kept_[g * pieces_.size() + i] : nullptr;
     }
   }
+  parallelFor(threads, count, [&](std::size_t k) { runJob(world, jobs_[k], slack); });
+  for (std::size_t k = 0; k < count; ++k) {
+    const PairJob& job = jobs_[k];
+    if (job.keep) ++(job.reused ? work_.manifolds_reused : work_.manifolds_built);
+    if (job.found) addPairContacts(world, job.key, job.manifold, out, pairs);
+  }
+}
+
+void ContactDetector::runJob(const World& world, PairJob& job, double slack) const {
+  job.reused = false;
+  if (job.key.piece_b < 0) {   // a piece and a ground plane
+    const Piece& p = pieces_[job.key.piece_a];
+    const double height = world.bodies[~job.key.piece_b].x.z();
+    job.found = job.keep ? keptGroundManifold(*job.ground_kept, p, height, job.margin, slack, job.manifold, job.reused)
+                         : collideGround(*p.shape, poses_[p.body], height, job.margin, job.manifold);
+    return;
+  }
+  const Piece& pa = pieces_[job.key.piece_a];
+  const Piece& pb = pieces_[job.key.piece_b];
+  job.found = job.keep ? keptPairManifold(*job.memory, pa, pb, job.margin, slack, job.manifold, job.reused)
+                       : collide(pa.hull, poses_[pa.body], pb.hull, poses_[pb.body], job.margin, job.memory->sat,
+                                 job.manifold);
 }
 
 bool ContactDetector::keeps(const Piece& piece) {
@@ -134,37 +164,32 @@ bool ContactDetector::keeps(const Piece& piece) {
   return !piece.shape->smooth();
 }
 
-bool ContactDetector::keptPairManifold(const PiecePair& key, double margin, double slack) {
-  const Piece& pa = pieces_[key.piece_a];
-  const Piece& pb = pieces_[key.piece_b];
+bool ContactDetector::keptPairManifold(PairMemory& memory, const Piece& pa, const Piece& pb, double margin,
+                                       double slack, ContactManifold& out, bool& reused) const {
   const Eigen::Isometry3d& pose_a = poses_[pa.body];
   const Eigen::Isometry3d& pose_b = poses_[pb.body];
-  PairMemory& memory = caches_[key];
   const Eigen::Isometry3d rel = pose_a.inverse(Eigen::Isometry) * pose_b;
   KeptManifold& kept = memory.kept;
   if (kept.valid && keptDrift(kept, rel, pb.hull.radius) + margin <= kept.margin_m + slack) {
-    ++work_.manifolds_reused;
-    return reuseManifold(kept, pose_a, pose_b, ReferenceIs::A, margin, manifold_);
+    reused = true;
+    return reuseManifold(kept, pose_a, pose_b, ReferenceIs::A, margin, out);
   }
-  ++work_.manifolds_built;
-  const bool found = collide(pa.hull, pose_a, pb.hull, pose_b, margin, memory.sat, manifold_);
-  keepManifold(manifold_, found, pose_a, pose_b, rel, ReferenceIs::A, pa.shape, *pb.shape, margin, kept);
+  const bool found = collide(pa.hull, pose_a, pb.hull, pose_b, margin, memory.sat, out);
+  keepManifold(out, found, pose_a, pose_b, rel, ReferenceIs::A, pa.shape, *pb.shape, margin, kept);
   return found;
 }
 
-bool ContactDetector::keptGroundManifold(KeptManifold& kept, int piece, double height, double margin,
-                                         double slack) {
-  const Piece& p = pieces_[piece];
+bool ContactDetector::keptGroundManifold(KeptManifold& kept, const Piece& p, double height, double margin,
+                                         double slack, ContactManifold& out, bool& reused) const {
   const Eigen::Isometry3d& pose = poses_[p.body];
   // The ground's frame is the world: the piece's pose is its pose relative to the ground.
   const Eigen::Isometry3d world = Eigen::Isometry3d::Identity();
   if (kept.valid && keptDrift(kept, pose, p.hull.radius) + margin <= kept.margin_m + slack) {
-    ++work_.manifolds_reused;
-    return reuseManifold(kept, world, pose, ReferenceIs::B, margin, manifold_);
+    reused = true;
+    return reuseManifold(kept, world, pose, ReferenceIs::B, margin, out);
   }
-  ++work_.manifolds_built;
-  const bool found = collideGround(*p.shape, pose, height, margin, manifold_);
-  keepManifold(manifold_, found, world, pose, pose, ReferenceIs::B, nullptr, *p.shape, margin, kept);
+  const bool found = collideGround(*p.shape, pose, height, margin, out);
+  keepManifold(out, found, world, pose, pose, ReferenceIs::B, nullptr, *p.shape, margin, kept);
   return found;
 }
 

@@ -36,9 +36,11 @@ class ContactDetector {
   // `reuse` (the time-stepping model's choice, ContactSettings::reuse_manifolds) keeps each
   // polyhedral pair's manifold and reuses it while the pair has moved less than kReuseSlack of
   // the margin (collision/kept_manifold.h); off, every pair goes through the narrow phase.
+  // `threads` run the pairs' narrow phases (parallel_for.h): the contacts, their order and every
+  // bit of them are the same at any count.
   void detect(const World& world, const ContactSettings& settings, std::vector<Contact>& out,
               std::vector<PiecePair>* pairs = nullptr, const std::vector<double>* reach = nullptr,
-              bool reuse = false);
+              bool reuse = false, int threads = 1);
   // A kept manifold is reused while its pair has moved (and its margin grown) by less than this
   // share of the base margin since the narrow phase built it: 0.1 mm of the 1 mm margin. What it
   // may miss is a feature that was beyond the margin then: such a feature is still farther than
@@ -109,16 +111,31 @@ class ContactDetector {
   void updateBoxes(double margin, const std::vector<double>* reach);   // from poses_
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
                        std::vector<Contact>& out, std::vector<PiecePair>* pairs) const;
-  // The manifold of two pieces or of a piece and the ground within `margin`, from the kept one
-  // where it may be reused, else from the narrow phase (then kept); false when none.
-  bool keptPairManifold(const PiecePair& pair, double margin, double slack);
-  bool keptGroundManifold(KeptManifold& kept, int piece, double height, double margin, double slack);
   // What is kept per pair of pieces between steps: the narrow phase's cached axis, and the
   // manifold when detection reuses them.
   struct PairMemory {
     SatCache sat;
     KeptManifold kept;
   };
+  // The manifold of two pieces or of a piece and the ground within `margin`, from the kept one
+  // where it may be reused (`reused` set), else from the narrow phase (then kept); false when none.
+  bool keptPairManifold(PairMemory& memory, const Piece& pa, const Piece& pb, double margin, double slack,
+                        ContactManifold& out, bool& reused) const;
+  bool keptGroundManifold(KeptManifold& kept, const Piece& piece, double height, double margin, double slack,
+                          ContactManifold& out, bool& reused) const;
+  // One pair of pieces, or a piece and a ground plane, of detect(): it reads the poses and writes
+  // only its own memory and outputs, so jobs may run on any thread.
+  struct PairJob {
+    PiecePair key;
+    double margin = 0;
+    bool keep = false;                      // through the kept manifold
+    PairMemory* memory = nullptr;           // two pieces
+    KeptManifold* ground_kept = nullptr;    // a piece and the ground, when keeping
+    bool found = false, reused = false;     // outputs
+    ContactManifold manifold;
+  };
+  void runJob(const World& world, PairJob& job, double slack) const;
+  std::vector<PairJob> jobs_;   // reused: their manifolds keep their buffers between steps
 
   std::vector<Piece> pieces_;
   std::vector<Eigen::Isometry3d> poses_;         // per body, as of the current detect()

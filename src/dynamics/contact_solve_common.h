@@ -19,6 +19,14 @@ struct ContactSolveStats {
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
   long active_set_steps = 0;        // subspace steps on islands Gauss-Seidel left unconverged
   long merged_impacts = 0;          // pair impacts grown by neighbours that turned their lift-off back
+
+  ContactSolveStats& operator+=(const ContactSolveStats& o) {
+    colliding += o.colliding, resting += o.resting, pivots += o.pivots, failures += o.failures;
+    friction_fallbacks += o.friction_fallbacks, iterative_islands += o.iterative_islands;
+    iterative_fallbacks += o.iterative_fallbacks, sweeps += o.sweeps, unconverged_sweeps += o.unconverged_sweeps;
+    active_set_steps += o.active_set_steps, merged_impacts += o.merged_impacts;
+    return *this;
+  }
 };
 
 // A bounce slower than what gravity takes away in about two steps cannot leave the surface for a

@@ -128,6 +128,9 @@ struct StepSettings {
   PenaltySettings penalty;                        // force and friction laws (Penalty)
   SleepSettings sleep;                            // when quiet islands freeze (sleeping.h)
   AccuracyTarget target;                          // what auto must meet, and every run reports
+  // Threads for detection and the islands' solves (dynamics/parallel_for.h). Not a scene setting:
+  // it changes how fast a run goes, never a bit of what it computes (the CLI's --threads).
+  int threads = 1;
 };
 
 // Tunings: fixed values the solvers use, not scene settings.

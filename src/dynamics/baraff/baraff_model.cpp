@@ -37,7 +37,9 @@ void BaraffModel::step(World& world, const StepSettings& settings, SharedStages&
 double BaraffModel::substep(World& world, const StepSettings& settings, SharedStages& shared, double remaining) {
   PipelineCounters& counters = shared.counters;
   ++counters.substeps;
-  auto detect = [&] { shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs); };
+  auto detect = [&] {
+    shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, nullptr, false, settings.threads);
+  };
   if (shared.has_contacts && !shared.contacts_fresh) shared.timed(Detect, detect);
   if (shared.has_contacts) shared.wakeTouched(world, detect);
   if (shared.has_contacts) {
@@ -89,7 +91,9 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     return h;
   }
 
-  shared.timed(Detect, [&] { shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_); });
+  shared.timed(Detect, [&] {
+    shared.detector.detect(world, settings.contact, contacts_end_, &pairs_end_, nullptr, false, settings.threads);
+  });
   double taken = h;
   double deepest = -std::numeric_limits<double>::infinity();
   for (const Contact& c : contacts_end_) deepest = std::max(deepest, c.depth);

@@ -304,7 +304,7 @@ void PenaltyModel::step(World& world, const StepSettings& settings, SharedStages
   if (shared.has_contacts) {
     auto detect = [&] {
       bodyReach(world, shared.body_radius, dt, reach_);
-      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_);
+      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_, false, settings.threads);
     };
     shared.timed(Detect, detect);
     shared.wakeTouched(world, detect);

@@ -8,6 +8,7 @@
 #include "dynamics/island_impulses.h"
 #include "dynamics/joints/contact_joint_lcp.h"
 #include "dynamics/joints/joint_impulses.h"
+#include "dynamics/parallel_for.h"
 
 namespace tumble {
 
@@ -18,7 +19,8 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   std::vector<const ImpulseRecord*> last(m);
   std::vector<double> want(m), owed(m, 0);   // normal velocity target; landing speed carried in
   std::vector<const Contact*> all(m);
-  for (std::size_t i = 0; i < m; ++i) {
+  // Per contact, on the threads: last step's impulse (a search of the memory) and the targets.
+  parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
     all[i] = &c;
     last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
@@ -27,7 +29,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     want[i] = -std::max(gap, 0.0) / dt;
     const double u = std::max(approach[i], owed[i]);
     if (gap <= settings.contact.tolerance_m && u > min_bounce_speed) want[i] = std::max(want[i], c.restitution * u);
-  }
+  });
   stats.resting += static_cast<long>(m);
 
   std::vector<Eigen::Vector3d> impulse(m, Eigen::Vector3d::Zero());   // on B, world axes
@@ -78,17 +80,22 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   } else {
     // Islands are solved one by one even by Gauss-Seidel: each then sweeps until it has itself
     // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
-    std::vector<const ImpulseRecord*> island_last;
-    for (const std::vector<const Contact*>& island : splitIntoIslands(world, all)) {
+    // They share no moving body, so they may be solved on several threads: each reads the velocities
+    // of before the solve and writes its own bodies' momenta and its own contacts' impulses.
+    const std::vector<std::vector<const Contact*>> islands = splitIntoIslands(world, all);
+    std::vector<ContactSolveStats> island_stats(islands.size());
+    parallelFor(settings.threads, islands.size(), [&](std::size_t k) {
+      const std::vector<const Contact*>& island = islands[k];
+      ContactSolveStats& own = island_stats[k];
       // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
       // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
       // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
       // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
       const ContactRows rows = buildContactRows(world, island);
-      island_last.assign(island.size(), nullptr);
+      std::vector<const ImpulseRecord*> island_last(island.size());
       const Eigen::VectorXd b = velocityTerms(island, rows);
-      for (std::size_t k = 0; k < island.size(); ++k)
-        island_last[k] = last[static_cast<std::size_t>(island[k] - contacts.data())];
+      for (std::size_t c = 0; c < island.size(); ++c)
+        island_last[c] = last[static_cast<std::size_t>(island[c] - contacts.data())];
       // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
       const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
       IslandImpulseSettings gs;
@@ -96,21 +103,22 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
                             : settings.time_stepping_sweeps;
       gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
       gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
-      IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, stats);
+      IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, own);
       Eigen::VectorXd f = std::move(solved.p);
       if (!solved.converged && small) {
         ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
         exact.problem.b = b;
-        lcp::LcpResult r = solveContactLcp(exact.problem, stats);
+        lcp::LcpResult r = solveContactLcp(exact.problem, own);
         if (usableLcpAnswer(r, exact.problem)) f = r.f;
-        else ++stats.iterative_fallbacks;
+        else ++own.iterative_fallbacks;
       }
       store(island, rows, f);
-    }
+    });
+    for (const ContactSolveStats& own : island_stats) stats += own;
   }
 
   std::vector<ImpulseRecord> records(m);
-  for (std::size_t i = 0; i < m; ++i) {
+  parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
     records[i] = impulseRecord(world, c, impulse[i]);
     // A landing the margin closed this step (pushed, not yet touching) is owed its bounce; one
@@ -119,7 +127,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     const bool carried = landing && owed[i] > 0 && owed[i] > approach[i];   // owed > 0: a record exists
     records[i].landing_speed = landing ? std::max(approach[i], owed[i]) : 0;
     records[i].landing_carried = carried ? last[i]->landing_carried + 1 : 0;
-  }
+  });
   memory_.replace(std::move(records));
 }
 

@@ -4,6 +4,7 @@
 
 #include "collision/first_touch.h"
 #include "collision/narrow_phase.h"
+#include "dynamics/parallel_for.h"
 
 namespace tumble {
 
@@ -56,22 +57,35 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
 }
 
 long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
-                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance) {
+                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance,
+                      int threads) {
   const std::size_t found = contacts.size();
-  long added = 0;
-  ContactManifold m;
+  // Each pair of pieces once, and only pairs turning fast enough to matter; then each pair's swept
+  // contacts on the threads, appended in the pairs' order.
+  std::vector<std::size_t> firsts;
   for (std::size_t i = 0; i < found; ++i) {
     const PiecePair pair = pairs[i];
-    if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;   // each pair of pieces once
-    // A copy: the push_back below may move the contacts, and `first` is read after it.
-    const Contact first = contacts[i];
+    if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;
+    const RigidBody& a = world.bodies[contacts[i].a];
+    const RigidBody& b = world.bodies[contacts[i].b];
+    const double spin_a = a.is_static ? 0.0 : a.angularVelocity().norm();
+    const double spin_b = b.is_static ? 0.0 : b.angularVelocity().norm();
+    if ((spin_a * detector.hull(pair.piece_a).radius + spin_b * detector.hull(pair.piece_b).radius) * dt <= margin)
+      continue;
+    firsts.push_back(i);
+  }
+  std::vector<std::vector<Contact>> swept(firsts.size());
+  parallelFor(threads, firsts.size(), [&](std::size_t job) {
+    const std::size_t i = firsts[job];
+    const PiecePair pair = pairs[i];
+    const Contact& first = contacts[i];
     const CollisionHull& ha = detector.hull(pair.piece_a);
     const CollisionHull& hb = detector.hull(pair.piece_b);
     const FreeMotion ma = freeMotion(world, world.bodies[first.a], dt, gravity);
     const FreeMotion mb = freeMotion(world, world.bodies[first.b], dt, gravity);
-    if ((ma.spin.norm() * ha.radius + mb.spin.norm() * hb.radius) * dt <= margin) continue;
     SatCache cache;
-    if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) continue;
+    ContactManifold m;
+    if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) return;
     for (const ContactPoint& p : m.points) {
       if (p.depth <= tolerance) continue;
       const Eigen::Vector3d pa = backToStart(ma, dt, p.position + 0.5 * p.depth * m.normal);
@@ -88,11 +102,16 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
       c.normal = m.normal;
       c.depth = -gap;
       c.closest_points = false;
+      swept[job].push_back(c);
+    }
+  });
+  long added = 0;
+  for (std::size_t job = 0; job < firsts.size(); ++job)
+    for (const Contact& c : swept[job]) {
       contacts.push_back(c);
-      pairs.push_back(pair);
+      pairs.push_back(pairs[firsts[job]]);
       ++added;
     }
-  }
   return added;
 }
 

@@ -17,11 +17,11 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
     auto detect = [&] {
       bodyReach(world, shared.body_radius, dt, reach_);
       shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_,
-                             settings.contact.reuse_manifolds);
+                             settings.contact.reuse_manifolds, settings.threads);
       keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
                             settings.contact.tolerance_m);
       addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
-                       settings.contact.margin_m, settings.contact.tolerance_m);
+                       settings.contact.margin_m, settings.contact.tolerance_m, settings.threads);
     };
     shared.timed(Detect, detect);
     shared.wakeTouched(world, detect);
