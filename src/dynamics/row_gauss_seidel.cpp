@@ -98,6 +98,9 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     for (int i = 0; i < n; ++i) {
       const Row& d = data[i];
       const RowLimit& lim = limit_of[i];
+      // A friction row with no force whose contact pushes with none (a speculative contact not
+      // closing) is bounded to zero: whatever w is, it stays zero. Its w is not worth computing.
+      if (lim.kind != RowLimit::Normal && f_of[i] == 0 && f_of[lim.normal] == 0) continue;
       double w = b_of[i] + d.dir.dot(lin[d.b] - lin[d.a]) + d.arm_a.dot(ang[d.a]) + d.arm_b.dot(ang[d.b]);
       double f = f_of[i], next = f;
       switch (lim.kind) {
