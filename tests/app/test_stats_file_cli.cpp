@@ -64,6 +64,18 @@ TEST_CASE("render --stats adds the phases of rendering", "[cli][stats]") {
   CHECK(s["phases_s"]["render"].get<double>() > 0);
 }
 
+TEST_CASE("render --stats tells the overlays' share of rendering", "[cli][stats]") {
+  fs::path dir = freshDir("overlays");
+  auto r = runTumble("render -q " + kScene + " --size 160x120 --overlay hud,contacts -o " +
+                     (dir / "f_####.png").string() + " --stats " + (dir / "s.json").string());
+  REQUIRE(r.exit_code == 0);
+  nlohmann::json s = readJson(dir / "s.json");
+  const double overlays = s["render_overlays_s"].get<double>(), render = s["phases_s"]["render"].get<double>();
+  CHECK(overlays > 0);   // the HUD's text is drawn on every frame
+  CHECK(overlays < render);
+  CHECK(s["per_frame_median_ms"]["render_overlays"].get<double>() > 0);
+}
+
 TEST_CASE("an existing stats file is refused with 73 before any work, and replaced with -y", "[cli][stats]") {
   fs::path dir = freshDir("exists");
   std::ofstream(dir / "s.json") << "precious";
