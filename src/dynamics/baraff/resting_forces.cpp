@@ -414,8 +414,10 @@ void pivot(const RestingContext& ctx, const std::vector<const Contact*>& resting
       const Contact& c = *resting[slide.contact[k]];
       const Eigen::Vector3d vt = tangentialVelocity(world, c);
       const double speed = vt.norm();
-      if (speed > 0 && speed <= slide.g[k] * rowMobility(world, c, vt / speed) * ctx.step_s)
-        any = held[slide.contact[k]] = 1;
+      if (speed > 0 && speed <= slide.g[k] * rowMobility(world, c, vt / speed) * ctx.step_s) {
+        held[slide.contact[k]] = 1;
+        any = true;
+      }
     }
     // A face slides as one: its corners, held one by one, would stop unequally and turn it.
     for (int k = 0; k < m && any; ++k)
