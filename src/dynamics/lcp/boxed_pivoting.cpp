@@ -21,6 +21,8 @@ BoxedPivoting::BoxedPivoting(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
   set_.assign(n, Set::Unprocessed);
   excluded_.assign(n, 0);
   factor_.reset(n);
+  y_.resize(n);
+  dfC_.resize(n);
   wScale_ = n > 0 ? std::max(A.diagonal().maxCoeff(), std::numeric_limits<double>::min()) : 1.0;
 }
 
@@ -116,22 +118,33 @@ LcpStatus BoxedPivoting::drive(int d, int budget) {
 
 // Δf_C = −A_CC⁻¹ A_Cd s and Δw = A_{:,C} Δf_C + A_{:,d} s, per unit step.
 void BoxedPivoting::direction(int d, double s) {
-  Eigen::VectorXd y;
+  Eigen::VectorXd& y = y_;
   delta_ = factor_.schur(A_, d, y);
   // Baraff's observation (1994): with A PSD, A_CC x = −A_Cd is consistent even when d depends on C;
   // then s_d = 0 and w_d does not move while f_d shifts load among the clamped contacts.
   dependent_ = !(delta_ > settings_.dependence_tolerance * A_(d, d));
   factor_.backSolve(y);
-  dfC_ = s * y;
   const auto& C = factor_.members();
+  const int k = static_cast<int>(C.size());
+  dfC_.head(k) = s * y.head(k);
   // Δw is needed only where the ratio test looks (Lower, Upper, Zero) and at d: Δw_C = 0 by
   // construction, and unprocessed variables get a fresh w when their turn comes (settle). Row i
   // of A_{:,C} is column i restricted to C (A symmetric), a contiguous-column gather.
   dw_.setZero(A_.rows());
   for (int i = 0; i < static_cast<int>(set_.size()); ++i) {
     if (i != d && set_[i] != Set::Lower && set_[i] != Set::Upper && set_[i] != Set::Zero) continue;
-    dw_[i] = s * A_(i, d) + (C.empty() ? 0.0 : A_.col(i)(C).dot(dfC_));
+    dw_[i] = s * A_(i, d) + (C.empty() ? 0.0 : clampedDot(i));
   }
+}
+
+// Row i of A_{:,C} times Δf_C: A(C[0], i) Δf_0 + A(C[1], i) Δf_1 + ..., summed in that order
+// (what Eigen's dot over an indexed view does, without the copy of C such a view takes per row).
+double BoxedPivoting::clampedDot(int i) const {
+  const auto& C = factor_.members();
+  const double* column = A_.col(i).data();
+  double sum = column[C[0]] * dfC_[0];
+  for (std::size_t r = 1; r < C.size(); ++r) sum += column[C[r]] * dfC_[static_cast<Eigen::Index>(r)];
+  return sum;
 }
 
 BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
@@ -150,7 +163,7 @@ BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
 
 void BoxedPivoting::ratioTestClamped(Blocker& best) const {
   const auto& C = factor_.members();
-  const double tol = settings_.pivot_tolerance * std::max(1.0, dfC_.lpNorm<Eigen::Infinity>());
+  const double tol = settings_.pivot_tolerance * std::max(1.0, dfC_.head(factor_.size()).lpNorm<Eigen::Infinity>());
   for (int r = 0; r < static_cast<int>(C.size()); ++r) {
     const int i = C[r];
     double t = kInf;
@@ -161,7 +174,7 @@ void BoxedPivoting::ratioTestClamped(Blocker& best) const {
 }
 
 void BoxedPivoting::ratioTestOthers(Blocker& best) const {
-  const double tol = settings_.pivot_tolerance * wScale_ * std::max(1.0, dfC_.lpNorm<Eigen::Infinity>());
+  const double tol = settings_.pivot_tolerance * wScale_ * std::max(1.0, dfC_.head(factor_.size()).lpNorm<Eigen::Infinity>());
   for (int i = 0; i < static_cast<int>(set_.size()); ++i) {
     if (excluded_[i]) continue;
     double t = kInf;

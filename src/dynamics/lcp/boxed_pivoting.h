@@ -42,6 +42,7 @@ private:
   bool settle(int d);
   LcpStatus drive(int d, int budget);
   void direction(int d, double s);
+  double clampedDot(int i) const;
   Blocker ratioTest(int d, double s) const;
   void ratioTestClamped(Blocker& best) const;
   void ratioTestOthers(Blocker& best) const;
@@ -62,7 +63,10 @@ private:
   std::vector<Set> set_;
   std::vector<char> excluded_;   // dependent variables that cannot join Clamped during this drive
   ClampedFactor factor_;
-  Eigen::VectorXd dfC_, dw_;     // direction per unit step: Δf over members(), Δw over all
+  // Direction per unit step: Δf over members() (the first size() entries of dfC_), Δw over all.
+  // Sized once for n variables: a pivot must not allocate.
+  Eigen::VectorXd dfC_, dw_;
+  Eigen::VectorXd y_;            // the Schur solve's y (ClampedFactor::schur)
   double delta_ = 0;             // Schur complement of d: dw_d = s·delta_
   bool dependent_ = false;       // d is a combination of Clamped: w does not move along the drive
   double wScale_ = 1;            // max_i A_ii: scale for the Δw noise floor

@@ -23,7 +23,9 @@ public:
   int size() const { return static_cast<int>(members_.size()); }
   const std::vector<int>& members() const { return members_; }
 
-  // y = L⁻¹ A_Cj; returns the Schur complement s_j = A_jj − yᵀy (≥ 0 up to rounding).
+  // y = L⁻¹ A_Cj in the first size() entries of y (y must hold at least the capacity: the solver
+  // pivots thousands of times a step, and a vector resized to each new size is a heap allocation
+  // each time); returns the Schur complement s_j = A_jj − yᵀy (≥ 0 up to rounding).
   double schur(const Eigen::MatrixXd& A, int j, Eigen::VectorXd& y) const;
   // Appends j if s_j > rel_tol·A_jj; returns false (and leaves the factor as it was) otherwise.
   bool add(const Eigen::MatrixXd& A, int j, double rel_tol);
@@ -31,12 +33,13 @@ public:
   void remove(int position);
   // Solves A_CC x = rhs in place (rhs in the order of members()).
   void solveInPlace(Eigen::VectorXd& rhs) const;
-  // Given y = L⁻¹ A_Cd from schur(), returns x = −A_CC⁻¹ A_Cd = −L⁻ᵀ y.
+  // Given y = L⁻¹ A_Cd from schur(), returns x = −A_CC⁻¹ A_Cd = −L⁻ᵀ y (in y's first size() entries).
   void backSolve(Eigen::VectorXd& y) const;
 
 private:
   Eigen::MatrixXd L_;  // capacity × capacity; the top-left size()×size() lower triangle is valid
   std::vector<int> members_;
+  Eigen::VectorXd y_, x_;   // capacity each: add()'s y and remove()'s rank-1 column
 };
 
 }  // namespace tumble::lcp
