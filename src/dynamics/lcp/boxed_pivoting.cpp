@@ -118,15 +118,14 @@ LcpStatus BoxedPivoting::drive(int d, int budget) {
 
 // Δf_C = −A_CC⁻¹ A_Cd s and Δw = A_{:,C} Δf_C + A_{:,d} s, per unit step.
 void BoxedPivoting::direction(int d, double s) {
-  Eigen::VectorXd& y = y_;
-  delta_ = factor_.schur(A_, d, y);
+  delta_ = factor_.schur(A_, d, y_);
   // Baraff's observation (1994): with A PSD, A_CC x = −A_Cd is consistent even when d depends on C;
   // then s_d = 0 and w_d does not move while f_d shifts load among the clamped contacts.
   dependent_ = !(delta_ > settings_.dependence_tolerance * A_(d, d));
-  factor_.backSolve(y);
+  factor_.backSolve(y_);
   const auto& C = factor_.members();
   const int k = static_cast<int>(C.size());
-  dfC_.head(k) = s * y.head(k);
+  dfC_.head(k) = s * y_.head(k);
   // Δw is needed only where the ratio test looks (Lower, Upper, Zero) and at d: Δw_C = 0 by
   // construction, and unprocessed variables get a fresh w when their turn comes (settle). Row i
   // of A_{:,C} is column i restricted to C (A symmetric), a contiguous-column gather.
@@ -147,6 +146,9 @@ double BoxedPivoting::clampedDot(int i) const {
   return sum;
 }
 
+// The largest |Δf| over the clamped set: the scale of the ratio tests' noise floors.
+double BoxedPivoting::directionNorm() const { return dfC_.head(factor_.size()).lpNorm<Eigen::Infinity>(); }
+
 BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
   Blocker best;
   best.t = kInf;
@@ -163,7 +165,7 @@ BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
 
 void BoxedPivoting::ratioTestClamped(Blocker& best) const {
   const auto& C = factor_.members();
-  const double tol = settings_.pivot_tolerance * std::max(1.0, dfC_.head(factor_.size()).lpNorm<Eigen::Infinity>());
+  const double tol = settings_.pivot_tolerance * std::max(1.0, directionNorm());
   for (int r = 0; r < static_cast<int>(C.size()); ++r) {
     const int i = C[r];
     double t = kInf;
@@ -174,7 +176,7 @@ void BoxedPivoting::ratioTestClamped(Blocker& best) const {
 }
 
 void BoxedPivoting::ratioTestOthers(Blocker& best) const {
-  const double tol = settings_.pivot_tolerance * wScale_ * std::max(1.0, dfC_.head(factor_.size()).lpNorm<Eigen::Infinity>());
+  const double tol = settings_.pivot_tolerance * wScale_ * std::max(1.0, directionNorm());
   for (int i = 0; i < static_cast<int>(set_.size()); ++i) {
     if (excluded_[i]) continue;
     double t = kInf;

@@ -43,6 +43,7 @@ private:
   LcpStatus drive(int d, int budget);
   void direction(int d, double s);
   double clampedDot(int i) const;
+  double directionNorm() const;
   Blocker ratioTest(int d, double s) const;
   void ratioTestClamped(Blocker& best) const;
   void ratioTestOthers(Blocker& best) const;
