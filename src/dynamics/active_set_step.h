@@ -33,9 +33,12 @@
 
 namespace tumble {
 
-// Returns f with its equality rows re-solved exactly (w = A f + b = 0 on them) and then projected
-// onto the bounds of `limits`. `f` is the current answer (Gauss-Seidel's).
-Eigen::VectorXd activeSetStep(const World& world, const std::vector<ContactRow>& rows, const Eigen::VectorXd& b,
-                              const std::vector<RowLimit>& limits, const Eigen::VectorXd& f);
+// Writes to `out` f with its equality rows re-solved exactly (w = A f + b = 0 on them) and then
+// projected onto the bounds of `limits`. `f` is the current answer (Gauss-Seidel's); `out` has one
+// entry per row and must not overlap it. Its work and its buffers grow with the island, not with
+// the world: a pile of 10 000 boxes has hundreds of islands a step.
+void activeSetStep(const World& world, const std::vector<ContactRow>& rows, Eigen::Ref<const Eigen::VectorXd> b,
+                   const std::vector<RowLimit>& limits, Eigen::Ref<const Eigen::VectorXd> f,
+                   Eigen::Ref<Eigen::VectorXd> out);
 
 }  // namespace tumble

@@ -80,16 +80,24 @@ double dotResponse(const BodyResponse& ji, const Eigen::Vector3d& dir_j_signed, 
 }  // namespace
 
 Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows) {
+  Eigen::MatrixXd A;
+  delassus(world, rows, A);
+  return A;
+}
+
+void delassus(const World& world, const std::vector<ContactRow>& rows, Eigen::MatrixXd& A) {
   const int n = static_cast<int>(rows.size());
-  std::vector<Eigen::Matrix3d> inv_inertia(world.bodies.size());
-  for (std::size_t b = 0; b < world.bodies.size(); ++b) inv_inertia[b] = inverseInertiaWorld(world.bodies[b]);
-  std::vector<BodyResponse> ra(n), rb(n);
+  // Per row, not per body of the world: an island of a few contacts in a pile of thousands.
+  thread_local std::vector<BodyResponse> ra, rb;
+  ra.resize(n);
+  rb.resize(n);
   for (int i = 0; i < n; ++i) {
     const ContactRow& r = rows[i];
-    ra[i] = responseOf(world.bodies[r.a], r.a, inv_inertia[r.a], r.ra, r.dir, -1);
-    rb[i] = responseOf(world.bodies[r.b], r.b, inv_inertia[r.b], r.rb, r.dir, +1);
+    const RigidBody &A_body = world.bodies[r.a], &B_body = world.bodies[r.b];
+    ra[i] = responseOf(A_body, r.a, inverseInertiaWorld(A_body), r.ra, r.dir, -1);
+    rb[i] = responseOf(B_body, r.b, inverseInertiaWorld(B_body), r.rb, r.dir, +1);
   }
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  A.setZero(n, n);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j <= i; ++j) {
       // A_ij = sum over bodies in both rows of J_i(body) M^-1 J_j(body)^T
@@ -102,11 +110,10 @@ Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows
       A(i, j) = A(j, i) = v;
     }
   }
-  if (joints_hold && !world.joints.empty()) return constrainedDelassus(world, rows, A);
-  return A;
+  if (joints_hold && !world.joints.empty()) A = constrainedDelassus(world, rows, A);
 }
 
-void applyAlongRows(World& world, const std::vector<ContactRow>& rows, const Eigen::VectorXd& f) {
+void applyAlongRows(World& world, const std::vector<ContactRow>& rows, Eigen::Ref<const Eigen::VectorXd> f) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const ContactRow& r = rows[i];
     Eigen::Vector3d push = f[i] * r.dir;

@@ -40,8 +40,10 @@ double rowVelocity(const World& world, const ContactRow& row);
 
 // A = J M^-1 J^T for the given rows (symmetric positive semi-definite).
 Eigen::MatrixXd delassus(const World& world, const std::vector<ContactRow>& rows);
+// The same into A, reusing its storage when it has the size already.
+void delassus(const World& world, const std::vector<ContactRow>& rows, Eigen::MatrixXd& A);
 // Applies impulses (N s) along the rows: P and L of both bodies change at once.
-void applyAlongRows(World& world, const std::vector<ContactRow>& rows, const Eigen::VectorXd& f);
+void applyAlongRows(World& world, const std::vector<ContactRow>& rows, Eigen::Ref<const Eigen::VectorXd> f);
 
 // While one is alive (on this thread), a world's joints hold through every impulse: delassus()
 // gives J W J^T with the joints' constrained mobility W (joints/joint_mobility.h) and

@@ -6,6 +6,30 @@
 #include "dynamics/lcp/dantzig_solver.h"
 
 namespace tumble {
+namespace {
+
+// The problem of rows already built for `set`: A, zero b, bounds and friction indices; its
+// vectors reuse their storage.
+void fillContactLcp(const World& world, std::span<const Contact* const> set, ContactLcp& out) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const int n = out.size();
+  lcp::LcpProblem& p = out.problem;
+  p.friction_of.assign(n, -1);
+  p.mu.setZero(n);
+  for (std::size_t k = 0; k < set.size(); ++k) {
+    auto [r0, r_end] = out.rowsOf(k);
+    for (int r = r0 + 1; r < r_end; ++r) {
+      p.friction_of[r] = r0;
+      p.mu[r] = set[k]->friction;
+    }
+  }
+  delassus(world, out.rows, p.A);
+  p.b.setZero(n);
+  p.lo.setZero(n);
+  p.hi.setConstant(n, kInf);
+}
+
+}  // namespace
 
 void ContactRows::addContact(const World& world, const Contact& c, bool friction) {
   normal_row.push_back(static_cast<int>(rows.size()));
@@ -31,38 +55,59 @@ std::pair<int, int> ContactRows::rowsOf(std::size_t k) const {
   return {normal_row[k], end};
 }
 
-ContactRows buildContactRows(const World& world, const std::vector<const Contact*>& set) {
+ContactRows buildContactRows(const World& world, std::span<const Contact* const> set) {
   ContactRows out;
-  for (const Contact* c : set) out.addContact(world, *c, true);
+  buildContactRows(world, set, out);
   return out;
 }
 
-std::vector<RowLimit> pyramidLimits(const ContactRows& rows, const std::vector<const Contact*>& set) {
-  std::vector<RowLimit> limits(rows.rows.size());
-  for (std::size_t k = 0; k < set.size(); ++k) {
-    auto [r0, r_end] = rows.rowsOf(k);
-    for (int r = r0 + 1; r < r_end; ++r) limits[r] = {RowLimit::Static, r0, set[k]->friction, 0};
-  }
+void buildContactRows(const World& world, std::span<const Contact* const> set, ContactRows& out) {
+  out.rows.clear();
+  out.normal_row.clear();
+  for (const Contact* c : set) out.addContact(world, *c, true);
+}
+
+std::vector<RowLimit> pyramidLimits(const ContactRows& rows, std::span<const Contact* const> set) {
+  std::vector<RowLimit> limits;
+  pyramidLimits(rows, set, limits);
   return limits;
 }
 
-Eigen::VectorXd warmStart(const ContactRows& rows, const std::vector<const ImpulseRecord*>& last) {
-  Eigen::VectorXd start = Eigen::VectorXd::Zero(rows.size());
-  for (std::size_t k = 0; k < last.size(); ++k) {
-    if (!last[k]) continue;
+void pyramidLimits(const ContactRows& rows, std::span<const Contact* const> set, std::vector<RowLimit>& out) {
+  out.assign(rows.rows.size(), RowLimit{});
+  for (std::size_t k = 0; k < set.size(); ++k) {
     auto [r0, r_end] = rows.rowsOf(k);
-    for (int r = r0; r < r_end; ++r) start[r] = last[k]->impulse.dot(rows.rows[r].dir);
-    start[r0] = std::max(0.0, start[r0]);
+    for (int r = r0 + 1; r < r_end; ++r) out[r] = {RowLimit::Static, r0, set[k]->friction, 0};
   }
+}
+
+Eigen::VectorXd warmStart(const ContactRows& rows, std::span<const ImpulseRecord* const> last) {
+  Eigen::VectorXd start(rows.size());
+  warmStart(rows, last, start);
   return start;
 }
 
-std::vector<Eigen::Vector3d> impulsePerContact(const ContactRows& rows, const Eigen::VectorXd& f, double scale) {
-  std::vector<Eigen::Vector3d> impulse(rows.normal_row.size(), Eigen::Vector3d::Zero());
-  for (std::size_t k = 0; k < impulse.size(); ++k) {
+void warmStart(const ContactRows& rows, std::span<const ImpulseRecord* const> last, Eigen::Ref<Eigen::VectorXd> out) {
+  out.setZero();
+  for (std::size_t k = 0; k < last.size(); ++k) {
+    if (!last[k]) continue;
     auto [r0, r_end] = rows.rowsOf(k);
-    for (int r = r0; r < r_end; ++r) impulse[k] += f[r] * scale * rows.rows[r].dir;
+    for (int r = r0; r < r_end; ++r) out[r] = last[k]->impulse.dot(rows.rows[r].dir);
+    out[r0] = std::max(0.0, out[r0]);
   }
+}
+
+std::vector<Eigen::Vector3d> impulsePerContact(const ContactRows& rows, const Eigen::VectorXd& f, double scale) {
+  std::vector<Eigen::Vector3d> impulse(rows.normal_row.size());
+  for (std::size_t k = 0; k < impulse.size(); ++k) impulse[k] = impulseOfContact(rows, f, k, scale);
+  return impulse;
+}
+
+Eigen::Vector3d impulseOfContact(const ContactRows& rows, Eigen::Ref<const Eigen::VectorXd> f, std::size_t k,
+                                 double scale) {
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  auto [r0, r_end] = rows.rowsOf(k);
+  for (int r = r0; r < r_end; ++r) impulse += f[r] * scale * rows.rows[r].dir;
   return impulse;
 }
 
@@ -75,41 +120,37 @@ ImpulseRecord impulseRecord(const World& world, const Contact& c, const Eigen::V
   return rec;
 }
 
-ContactLcp buildContactLcp(const World& world, const std::vector<const Contact*>& set,
+ContactLcp buildContactLcp(const World& world, std::span<const Contact* const> set,
                            const std::vector<char>& friction) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   ContactLcp out;
   for (std::size_t i = 0; i < set.size(); ++i) out.addContact(world, *set[i], friction[i]);
-  const int n = out.size();
-  std::vector<int> friction_of(n, -1);
-  Eigen::VectorXd mu = Eigen::VectorXd::Zero(n);
-  for (std::size_t k = 0; k < set.size(); ++k) {
-    auto [r0, r_end] = out.rowsOf(k);
-    for (int r = r0 + 1; r < r_end; ++r) {
-      friction_of[r] = r0;
-      mu[r] = set[k]->friction;
-    }
-  }
-  out.problem.A = delassus(world, out.rows);
-  out.problem.b = Eigen::VectorXd::Zero(n);
-  out.problem.lo = Eigen::VectorXd::Zero(n);
-  out.problem.hi = Eigen::VectorXd::Constant(n, kInf);
-  out.problem.friction_of = std::move(friction_of);
-  out.problem.mu = std::move(mu);
+  fillContactLcp(world, set, out);
   return out;
 }
 
+void buildContactLcp(const World& world, std::span<const Contact* const> set, ContactLcp& out) {
+  out.rows.clear();
+  out.normal_row.clear();
+  for (const Contact* c : set) out.addContact(world, *c, true);
+  fillContactLcp(world, set, out);
+}
+
 lcp::LcpResult solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats) {
+  lcp::LcpResult r;
+  solveContactLcp(p, stats, r);
+  return r;
+}
+
+void solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats, lcp::LcpResult& r) {
   // Redundant contacts (four corners of a face) leave the split of the normal force between them
   // free, so the friction bounds +-mu f_n need not settle to the last bit between passes: settle to
   // 1e-9 of the largest bound (far below any force that moves a body measurably).
   lcp::DantzigSettings settings;
   settings.friction_tolerance = tuning::kFrictionTolerance;
   settings.max_friction_passes = tuning::kMaxFrictionPasses;
-  lcp::LcpResult r = lcp::solveDantzig(p, settings);
+  lcp::solveDantzig(p, settings, r);
   stats.pivots += r.iterations;
   if (r.status != lcp::LcpStatus::Solved) ++stats.failures;
-  return r;
 }
 
 bool usableLcpAnswer(const lcp::LcpResult& r, const lcp::LcpProblem& p) {

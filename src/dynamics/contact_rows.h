@@ -10,6 +10,7 @@
 // the impulses stored back into it.
 #pragma once
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -41,19 +42,27 @@ struct ContactRows {
 ContactRow slideRow(const World& world, const Contact& c, const Eigen::Vector3d& against);
 
 // Every contact of `set` with its friction pyramid (where mu > 0).
-ContactRows buildContactRows(const World& world, const std::vector<const Contact*>& set);
+ContactRows buildContactRows(const World& world, std::span<const Contact* const> set);
+// The same into `out`, whose buffers are reused (a step builds an island's rows every step).
+void buildContactRows(const World& world, std::span<const Contact* const> set, ContactRows& out);
 
 // Row limits for Gauss-Seidel: normal rows push, tangent rows stay inside mu times their normal.
 // `rows` must hold pyramid rows only (built by addContact).
-std::vector<RowLimit> pyramidLimits(const ContactRows& rows, const std::vector<const Contact*>& set);
+std::vector<RowLimit> pyramidLimits(const ContactRows& rows, std::span<const Contact* const> set);
+void pyramidLimits(const ContactRows& rows, std::span<const Contact* const> set, std::vector<RowLimit>& out);
 
 // The first guess of an impulse solve: last step's impulse of each contact (`last[k]`, null for a
 // new contact) projected on its rows, the normal part never pulling.
-Eigen::VectorXd warmStart(const ContactRows& rows, const std::vector<const ImpulseRecord*>& last);
+Eigen::VectorXd warmStart(const ContactRows& rows, std::span<const ImpulseRecord* const> last);
+// The same into `out` (one entry per row).
+void warmStart(const ContactRows& rows, std::span<const ImpulseRecord* const> last, Eigen::Ref<Eigen::VectorXd> out);
 
 // Per contact, the sum over its rows of f[r] * scale along the row (N s on B, world axes, for
 // impulses; scale turns forces over a step into impulses).
 std::vector<Eigen::Vector3d> impulsePerContact(const ContactRows& rows, const Eigen::VectorXd& f, double scale);
+// The same for contact k alone.
+Eigen::Vector3d impulseOfContact(const ContactRows& rows, Eigen::Ref<const Eigen::VectorXd> f, std::size_t k,
+                                 double scale);
 
 // A record of the impulse contact c took, for the next step's warm start.
 ImpulseRecord impulseRecord(const World& world, const Contact& c, const Eigen::Vector3d& impulse);
@@ -63,11 +72,15 @@ struct ContactLcp : ContactRows {
 };
 
 // `friction[i]` says whether contact i gets friction rows (and it gets them only if mu > 0).
-ContactLcp buildContactLcp(const World& world, const std::vector<const Contact*>& set,
+ContactLcp buildContactLcp(const World& world, std::span<const Contact* const> set,
                            const std::vector<char>& friction);
+// The same into `out`, every contact with friction (where mu > 0), reusing its storage: an island
+// of the size of the last allocates nothing.
+void buildContactLcp(const World& world, std::span<const Contact* const> set, ContactLcp& out);
 
 // Solves with the Dantzig pivoting solver at the settings contacts need; counts pivots and failures.
 lcp::LcpResult solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats);
+void solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats, lcp::LcpResult& r);
 
 // A pivoting answer is usable when solved, or when it stopped short (pivot or friction-pass cap)
 // with finite forces that satisfy complementarity to within 1e-6 of the problem's scale.

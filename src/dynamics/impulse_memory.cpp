@@ -1,6 +1,7 @@
 #include "dynamics/impulse_memory.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace tumble {
 namespace {
@@ -35,10 +36,18 @@ const ImpulseRecord* ImpulseMemory::find(const World& world, const Contact& c, d
   return best;
 }
 
-void ImpulseMemory::replace(std::vector<ImpulseRecord> records) {
-  std::stable_sort(records.begin(), records.end(),
-                   [](const ImpulseRecord& x, const ImpulseRecord& y) { return pairBefore(x, y.a, y.b); });
-  records_ = std::move(records);
+void ImpulseMemory::replace(const std::vector<ImpulseRecord>& records) {
+  // A stable sort by pair, as a sort by (pair, place) of the records' places: std::stable_sort
+  // would allocate its merge buffer at every step.
+  order_.resize(records.size());
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  std::sort(order_.begin(), order_.end(), [&](std::size_t x, std::size_t y) {
+    const ImpulseRecord &rx = records[x], &ry = records[y];
+    return pairBefore(rx, ry.a, ry.b) || (!pairBefore(ry, rx.a, rx.b) && x < y);
+  });
+  spare_.resize(records.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) spare_[k] = records[order_[k]];
+  records_.swap(spare_);
 }
 
 }  // namespace tumble

@@ -34,12 +34,15 @@ class ImpulseMemory {
   static constexpr double kMatchRadius = 5e-3;
   // Last step's record nearest to contact c (same bodies, within `radius` m), or nullptr.
   const ImpulseRecord* find(const World& world, const Contact& c, double radius) const;
-  // Replaces the records with this step's (any order; sorted here).
-  void replace(std::vector<ImpulseRecord> records);
+  // Replaces the records with a copy of this step's (any order; sorted here). Its buffers are
+  // kept from one step to the next: a warm step allocates nothing here.
+  void replace(const std::vector<ImpulseRecord>& records);
   std::size_t size() const { return records_.size(); }
 
  private:
   std::vector<ImpulseRecord> records_;   // sorted by (a, b), stable within a pair
+  std::vector<ImpulseRecord> spare_;     // the records before, their storage reused
+  std::vector<std::size_t> order_;
 };
 
 }  // namespace tumble

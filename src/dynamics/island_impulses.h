@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "dynamics/contact_rows.h"
@@ -30,10 +31,17 @@ struct IslandImpulses {
 };
 
 // `rows` holds the island's contacts (`island`) with their friction pyramids (buildContactRows).
-// Counts the island, its sweeps and whether it hit the cap in `stats`.
-IslandImpulses solveIslandImpulses(const World& world, const ContactRows& rows,
-                                   const std::vector<const Contact*>& island, const Eigen::VectorXd& b,
-                                   const Eigen::VectorXd& start, const IslandImpulseSettings& settings,
-                                   ContactSolveStats& stats);
+// Counts the island, its sweeps and whether it hit the cap in `stats`. An empty `start` starts
+// from zero.
+IslandImpulses solveIslandImpulses(const World& world, const ContactRows& rows, std::span<const Contact* const> island,
+                                   const Eigen::VectorXd& b, const Eigen::VectorXd& start,
+                                   const IslandImpulseSettings& settings, ContactSolveStats& stats);
+
+// The same solve in place, allocating nothing once its buffers have grown to the island: `p` (one
+// entry per row) holds the first guess on entry and the impulses on exit. Returns whether it
+// converged.
+bool solveIslandImpulsesInPlace(const World& world, const ContactRows& rows, std::span<const Contact* const> island,
+                                Eigen::Ref<const Eigen::VectorXd> b, Eigen::Ref<Eigen::VectorXd> p,
+                                const IslandImpulseSettings& settings, ContactSolveStats& stats);
 
 }  // namespace tumble

@@ -23,8 +23,19 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
                                           const Eigen::VectorXd& b, const std::vector<RowLimit>& limits,
                                           const RowGaussSeidelSettings& settings,
                                           const Eigen::VectorXd& start) {
-  const int n = static_cast<int>(rows.size());
   RowGaussSeidelResult out;
+  const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
+  // A first guess of zero pushes nothing: the same accelerations as no first guess.
+  out.f = start.size() == n ? start : Eigen::VectorXd::Zero(n);
+  static_cast<RowGaussSeidelSweeps&>(out) = sweepRowsGaussSeidel(world, rows, b, limits, settings, out.f);
+  return out;
+}
+
+RowGaussSeidelSweeps sweepRowsGaussSeidel(const World& world, const std::vector<ContactRow>& rows,
+                                          Eigen::Ref<const Eigen::VectorXd> b, const std::vector<RowLimit>& limits,
+                                          const RowGaussSeidelSettings& settings, Eigen::Ref<Eigen::VectorXd> f) {
+  const int n = static_cast<int>(rows.size());
+  RowGaussSeidelSweeps out;
   if (n == 0) {
     out.converged = true;
     return out;
@@ -83,13 +94,8 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
     ang[d.a] += df * d.ang_a;
     ang[d.b] += df * d.ang_b;
   };
-  if (start.size() == n) {
-    out.f = start;
-    for (int i = 0; i < n; ++i) push(data[i], start[i]);
-  } else {
-    out.f = Eigen::VectorXd::Zero(n);
-  }
-  double* const f_of = out.f.data();
+  for (int i = 0; i < n; ++i) push(data[i], f[i]);
+  double* const f_of = f.data();
   const double* const b_of = b.data();
   const RowLimit* const limit_of = limits.data();
   const double stop = settings.tolerance * (b.lpNorm<Eigen::Infinity>() + 1e-300);

@@ -38,13 +38,16 @@ struct RowGaussSeidelSettings {
   double tolerance = 1e-7;
 };
 
-struct RowGaussSeidelResult {
-  Eigen::VectorXd f;     // force along each row (N)
+struct RowGaussSeidelSweeps {
   int sweeps = 0;
   bool converged = false;
   // The largest change of any row's acceleration in the last sweep (NaN if one was not finite):
   // how far from a fixed point the answer is, in the units of the tolerance.
   double last_change = 0;
+};
+
+struct RowGaussSeidelResult : RowGaussSeidelSweeps {
+  Eigen::VectorXd f;     // force along each row (N)
 };
 
 // `start` (if it has one entry per row) is the first guess: the time-stepping model passes the
@@ -53,5 +56,11 @@ RowGaussSeidelResult solveRowsGaussSeidel(const World& world, const std::vector<
                                           const Eigen::VectorXd& b, const std::vector<RowLimit>& limits,
                                           const RowGaussSeidelSettings& settings = {},
                                           const Eigen::VectorXd& start = {});
+
+// The same solve in place, allocating nothing once its buffers have grown to the island: `f` (one
+// entry per row) holds the first guess on entry and the answer on exit.
+RowGaussSeidelSweeps sweepRowsGaussSeidel(const World& world, const std::vector<ContactRow>& rows,
+                                          Eigen::Ref<const Eigen::VectorXd> b, const std::vector<RowLimit>& limits,
+                                          const RowGaussSeidelSettings& settings, Eigen::Ref<Eigen::VectorXd> f);
 
 }  // namespace tumble

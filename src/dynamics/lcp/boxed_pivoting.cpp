@@ -12,12 +12,22 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 BoxedPivoting::BoxedPivoting(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                              const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                             const DantzigSettings& settings)
-    : A_(A), b_(b), lo_(lo), hi_(hi), settings_(settings) {
+                             const DantzigSettings& settings) {
+  reset(A, b, lo, hi, settings);
+}
+
+void BoxedPivoting::reset(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
+                          const Eigen::VectorXd& hi, const DantzigSettings& settings) {
+  A_ = &A, b_ = &b, lo_ = &lo, hi_ = &hi, settings_ = &settings;
   const int n = static_cast<int>(b.size());
   // unprocessed variables wait at the feasible value nearest 0 (0 for contacts and friction)
   f_ = Eigen::VectorXd::Zero(n).cwiseMax(lo).cwiseMin(hi);
-  w_ = A * f_ + b;
+  // A f + b without the product's temporary (the same sums: the product is evaluated alone first)
+  w_.noalias() = A * f_;
+  w_ += b;
+  pivots_ = 0;
+  delta_ = 0;
+  dependent_ = false;
   set_.assign(n, Set::Unprocessed);
   excluded_.assign(n, 0);
   factor_.reset(n);
@@ -46,30 +56,30 @@ LcpStatus BoxedPivoting::run(const std::vector<int>& order, int budget) {
 
 // Size of the terms whose cancellation gives w_i: the rounding floor of w_i.
 double BoxedPivoting::scaleOf(int i) const {
-  return std::abs(b_[i]) + A_.col(i).cwiseAbs().dot(f_.cwiseAbs());
+  return std::abs(b()[i]) + A().col(i).cwiseAbs().dot(f_.cwiseAbs());
 }
 
 bool BoxedPivoting::violates(int i) const {
-  const double wi = A_.col(i).dot(f_) + b_[i];  // A symmetric: column i is row i
-  const double tol = settings_.residual_tolerance * scaleOf(i);
-  if (f_[i] <= lo_[i] && wi >= -tol) return false;
-  if (f_[i] >= hi_[i] && wi <= tol) return false;
+  const double wi = A().col(i).dot(f_) + b()[i];  // A symmetric: column i is row i
+  const double tol = settings().residual_tolerance * scaleOf(i);
+  if (f_[i] <= lo()[i] && wi >= -tol) return false;
+  if (f_[i] >= hi()[i] && wi <= tol) return false;
   return std::abs(wi) > tol;
 }
 
 // A variable whose condition already holds when its turn comes is placed without a pivot.
 bool BoxedPivoting::settle(int d) {
-  w_[d] = A_.col(d).dot(f_) + b_[d];
-  const double tol = settings_.residual_tolerance * scaleOf(d);
-  if (lo_[d] == hi_[d]) {
+  w_[d] = A().col(d).dot(f_) + b()[d];
+  const double tol = settings().residual_tolerance * scaleOf(d);
+  if (lo()[d] == hi()[d]) {
     set_[d] = Set::Fixed;
-  } else if (f_[d] <= lo_[d] && w_[d] >= -tol) {
+  } else if (f_[d] <= lo()[d] && w_[d] >= -tol) {
     set_[d] = Set::Lower;
-  } else if (f_[d] >= hi_[d] && w_[d] <= tol) {
+  } else if (f_[d] >= hi()[d] && w_[d] <= tol) {
     set_[d] = Set::Upper;
-  } else if (f_[d] > lo_[d] && f_[d] < hi_[d] && std::abs(w_[d]) <= tol) {
+  } else if (f_[d] > lo()[d] && f_[d] < hi()[d] && std::abs(w_[d]) <= tol) {
     // interior with w = 0: clamp it, or hold it as Zero if it is redundant
-    set_[d] = factor_.add(A_, d, settings_.dependence_tolerance) ? Set::Clamped : Set::Zero;
+    set_[d] = factor_.add(A(), d, settings().dependence_tolerance) ? Set::Clamped : Set::Zero;
     if (set_[d] == Set::Clamped) w_[d] = 0;
   } else {
     return false;
@@ -82,11 +92,11 @@ bool BoxedPivoting::settle(int d) {
 // large terms), which can exceed the rounding floor used by settle(); accept d at its bound, or as
 // Zero inside its box, when |w_d| is within that accuracy.
 bool BoxedPivoting::acceptDependent(int d) {
-  const double wd = A_.col(d).dot(f_) + b_[d];
-  if (std::abs(wd) > settings_.consistency_tolerance * scaleOf(d)) return false;
+  const double wd = A().col(d).dot(f_) + b()[d];
+  if (std::abs(wd) > settings().consistency_tolerance * scaleOf(d)) return false;
   w_[d] = wd;
-  if (f_[d] <= lo_[d]) set_[d] = Set::Lower;
-  else if (f_[d] >= hi_[d]) set_[d] = Set::Upper;
+  if (f_[d] <= lo()[d]) set_[d] = Set::Lower;
+  else if (f_[d] >= hi()[d]) set_[d] = Set::Upper;
   else set_[d] = Set::Zero;
   return true;
 }
@@ -118,10 +128,10 @@ LcpStatus BoxedPivoting::drive(int d, int budget) {
 
 // Δf_C = −A_CC⁻¹ A_Cd s and Δw = A_{:,C} Δf_C + A_{:,d} s, per unit step.
 void BoxedPivoting::direction(int d, double s) {
-  delta_ = factor_.schur(A_, d, y_);
+  delta_ = factor_.schur(A(), d, y_);
   // Baraff's observation (1994): with A PSD, A_CC x = −A_Cd is consistent even when d depends on C;
   // then s_d = 0 and w_d does not move while f_d shifts load among the clamped contacts.
-  dependent_ = !(delta_ > settings_.dependence_tolerance * A_(d, d));
+  dependent_ = !(delta_ > settings().dependence_tolerance * A()(d, d));
   factor_.backSolve(y_);
   const auto& C = factor_.members();
   const int k = static_cast<int>(C.size());
@@ -129,10 +139,10 @@ void BoxedPivoting::direction(int d, double s) {
   // Δw is needed only where the ratio test looks (Lower, Upper, Zero) and at d: Δw_C = 0 by
   // construction, and unprocessed variables get a fresh w when their turn comes (settle). Row i
   // of A_{:,C} is column i restricted to C (A symmetric), a contiguous-column gather.
-  dw_.setZero(A_.rows());
+  dw_.setZero(A().rows());
   for (int i = 0; i < static_cast<int>(set_.size()); ++i) {
     if (i != d && set_[i] != Set::Lower && set_[i] != Set::Upper && set_[i] != Set::Zero) continue;
-    dw_[i] = s * A_(i, d) + (C.empty() ? 0.0 : clampedDot(i));
+    dw_[i] = s * A()(i, d) + (C.empty() ? 0.0 : clampedDot(i));
   }
 }
 
@@ -140,7 +150,7 @@ void BoxedPivoting::direction(int d, double s) {
 // (what Eigen's dot over an indexed view does, without the copy of C such a view takes per row).
 double BoxedPivoting::clampedDot(int i) const {
   const auto& C = factor_.members();
-  const double* column = A_.col(i).data();
+  const double* column = A().col(i).data();
   double sum = column[C[0]] * dfC_[0];
   for (std::size_t r = 1; r < C.size(); ++r) sum += column[C[r]] * dfC_[static_cast<Eigen::Index>(r)];
   return sum;
@@ -154,7 +164,7 @@ BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
   best.t = kInf;
   // the drive completes when w_d reaches 0 (rate s·delta toward 0), or f_d its bound
   if (!dependent_) best = {Block::DriveDone, d, std::max(0.0, -s * w_[d]) / delta_};
-  const double toBound = s > 0 ? hi_[d] - f_[d] : f_[d] - lo_[d];
+  const double toBound = s > 0 ? hi()[d] - f_[d] : f_[d] - lo()[d];
   if (toBound < best.t) best = {Block::DriveBound, d, toBound};
   ratioTestClamped(best);
   // when d depends on C, A Δf = 0 exactly (Δfᵀ A Δf = s·Δw_d + Δf_C·Δw_C = 0 and A is PSD), so no
@@ -165,18 +175,18 @@ BoxedPivoting::Blocker BoxedPivoting::ratioTest(int d, double s) const {
 
 void BoxedPivoting::ratioTestClamped(Blocker& best) const {
   const auto& C = factor_.members();
-  const double tol = settings_.pivot_tolerance * std::max(1.0, directionNorm());
+  const double tol = settings().pivot_tolerance * std::max(1.0, directionNorm());
   for (int r = 0; r < static_cast<int>(C.size()); ++r) {
     const int i = C[r];
     double t = kInf;
-    if (dfC_[r] < -tol) t = std::max(0.0, f_[i] - lo_[i]) / -dfC_[r];
-    if (dfC_[r] > tol) t = std::max(0.0, hi_[i] - f_[i]) / dfC_[r];
+    if (dfC_[r] < -tol) t = std::max(0.0, f_[i] - lo()[i]) / -dfC_[r];
+    if (dfC_[r] > tol) t = std::max(0.0, hi()[i] - f_[i]) / dfC_[r];
     if (t < best.t) best = {Block::LeaveClamped, r, t};
   }
 }
 
 void BoxedPivoting::ratioTestOthers(Blocker& best) const {
-  const double tol = settings_.pivot_tolerance * wScale_ * std::max(1.0, directionNorm());
+  const double tol = settings().pivot_tolerance * wScale_ * std::max(1.0, directionNorm());
   for (int i = 0; i < static_cast<int>(set_.size()); ++i) {
     if (excluded_[i]) continue;
     double t = kInf;
@@ -199,7 +209,7 @@ void BoxedPivoting::step(int d, double s, double t) {
 }
 
 void BoxedPivoting::placeAtBound(int i, bool upper) {
-  f_[i] = upper ? hi_[i] : lo_[i];
+  f_[i] = upper ? hi()[i] : lo()[i];
   set_[i] = upper ? Set::Upper : Set::Lower;
 }
 
@@ -209,7 +219,7 @@ bool BoxedPivoting::apply(const Blocker& blk, int d, double s) {
     case Block::DriveDone:
       w_[d] = 0;
       // delta_ passed the same test, so this succeeds; if rounding says otherwise, d is redundant
-      set_[d] = factor_.add(A_, d, settings_.dependence_tolerance) ? Set::Clamped : Set::Zero;
+      set_[d] = factor_.add(A(), d, settings().dependence_tolerance) ? Set::Clamped : Set::Zero;
       return true;
     case Block::DriveBound:
       placeAtBound(d, s > 0);
@@ -222,7 +232,7 @@ bool BoxedPivoting::apply(const Blocker& blk, int d, double s) {
     }
     case Block::JoinClamped:
       w_[blk.index] = 0;
-      if (factor_.add(A_, blk.index, settings_.dependence_tolerance)) set_[blk.index] = Set::Clamped;
+      if (factor_.add(A(), blk.index, settings().dependence_tolerance)) set_[blk.index] = Set::Clamped;
       else excluded_[blk.index] = 1;  // redundant: w stays 0 at its bound; see ratioTest
       return false;
     case Block::None: break;
@@ -236,11 +246,13 @@ bool BoxedPivoting::apply(const Blocker& blk, int d, double s) {
 void BoxedPivoting::refine() {
   const auto& C = factor_.members();
   if (C.empty()) return;
-  const Eigen::VectorXd w = A_ * f_ + b_;
-  Eigen::VectorXd r = w(C);
+  refined_w_.noalias() = A() * f_;
+  refined_w_ += b();
+  auto r = y_.head(static_cast<Eigen::Index>(C.size()));
+  for (int k = 0; k < static_cast<int>(C.size()); ++k) r[k] = refined_w_[C[k]];
   factor_.solveInPlace(r);
   for (int k = 0; k < static_cast<int>(C.size()); ++k)
-    f_[C[k]] = std::clamp(f_[C[k]] - r[k], lo_[C[k]], hi_[C[k]]);
+    f_[C[k]] = std::clamp(f_[C[k]] - r[k], lo()[C[k]], hi()[C[k]]);
 }
 
 }  // namespace tumble::lcp

@@ -23,8 +23,13 @@ namespace tumble::lcp {
 
 class BoxedPivoting {
 public:
+  BoxedPivoting() = default;
   BoxedPivoting(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
                 const Eigen::VectorXd& hi, const DantzigSettings& settings);
+  // Starts a new problem (the arguments must outlive the solve), reusing the buffers of the last:
+  // one of the same size allocates nothing.
+  void reset(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
+             const Eigen::VectorXd& hi, const DantzigSettings& settings);
   // Drives the variables in `order` (each once), then repairs any that drifted; stops after `budget` pivots.
   LcpStatus run(const std::vector<int>& order, int budget);
   const Eigen::VectorXd& f() const { return f_; }
@@ -55,11 +60,17 @@ private:
   void refine();
   double scaleOf(int i) const;
 
-  const Eigen::MatrixXd& A_;
-  const Eigen::VectorXd& b_;
-  const Eigen::VectorXd& lo_;
-  const Eigen::VectorXd& hi_;
-  const DantzigSettings& settings_;
+  // The problem, as set by reset (pointers so that one engine can serve problem after problem).
+  const Eigen::MatrixXd& A() const { return *A_; }
+  const Eigen::VectorXd& b() const { return *b_; }
+  const Eigen::VectorXd& lo() const { return *lo_; }
+  const Eigen::VectorXd& hi() const { return *hi_; }
+  const DantzigSettings& settings() const { return *settings_; }
+  const Eigen::MatrixXd* A_ = nullptr;
+  const Eigen::VectorXd* b_ = nullptr;
+  const Eigen::VectorXd* lo_ = nullptr;
+  const Eigen::VectorXd* hi_ = nullptr;
+  const DantzigSettings* settings_ = nullptr;
   Eigen::VectorXd f_, w_;
   std::vector<Set> set_;
   std::vector<char> excluded_;   // dependent variables that cannot join Clamped during this drive
@@ -68,6 +79,7 @@ private:
   // Sized once for n variables: a pivot must not allocate.
   Eigen::VectorXd dfC_, dw_;
   Eigen::VectorXd y_;            // the Schur solve's y (ClampedFactor::schur)
+  Eigen::VectorXd refined_w_;    // refine()'s A f + b
   double delta_ = 0;             // Schur complement of d: dw_d = s·delta_
   bool dependent_ = false;       // d is a combination of Clamped: w does not move along the drive
   double wScale_ = 1;            // max_i A_ii: scale for the Δw noise floor

@@ -58,7 +58,7 @@ void ClampedFactor::remove(int p) {
   members_.erase(members_.begin() + p);
 }
 
-void ClampedFactor::solveInPlace(Eigen::VectorXd& rhs) const {
+void ClampedFactor::solveInPlace(Eigen::Ref<Eigen::VectorXd> rhs) const {
   const int k = size();
   if (k == 0) return;
   const auto L = L_.topLeftCorner(k, k).triangularView<Eigen::Lower>();

@@ -32,7 +32,7 @@ public:
   // Removes the member at the given position in members().
   void remove(int position);
   // Solves A_CC x = rhs in place (rhs in the order of members()).
-  void solveInPlace(Eigen::VectorXd& rhs) const;
+  void solveInPlace(Eigen::Ref<Eigen::VectorXd> rhs) const;
   // Given y = L⁻¹ A_Cd from schur(), returns x = −A_CC⁻¹ A_Cd = −L⁻ᵀ y (in y's first size() entries).
   void backSolve(Eigen::VectorXd& y) const;
 

@@ -13,15 +13,21 @@ namespace {
 // Normal forces (and every other non-friction variable) first, then friction in index order: when
 // a friction variable is driven, the normal force its bound comes from has already been settled
 // (ODE's dLCP orders its unknowns the same way).
-std::vector<int> processingOrder(const LcpProblem& p) {
-  std::vector<int> order;
-  order.reserve(p.size());
+void processingOrder(const LcpProblem& p, std::vector<int>& order) {
+  order.clear();
   for (int i = 0; i < p.size(); ++i)
     if (!p.isFriction(i)) order.push_back(i);
   for (int i = 0; i < p.size(); ++i)
     if (p.isFriction(i)) order.push_back(i);
-  return order;
 }
+
+// The buffers of a solve, kept per thread between solves.
+struct Workspace {
+  Eigen::VectorXd lo, hi, next_lo, next_hi;
+  std::vector<int> order;
+  std::vector<Bound> set, last_set;
+  BoxedPivoting engine;
+};
 
 bool hasFriction(const LcpProblem& p) {
   return std::any_of(p.friction_of.begin(), p.friction_of.end(), [](int k) { return k >= 0; });
@@ -40,17 +46,19 @@ bool boundsConverged(const LcpProblem& p, const Eigen::VectorXd& hi, const Eigen
 }
 
 void finish(const LcpProblem& p, LcpResult& r) {
-  r.w = p.A * r.f + p.b;
+  r.w.noalias() = p.A * r.f;   // A f + b, the product first: no temporary
+  r.w += p.b;
   r.residual = measureResidual(p, r.f, r.w);
 }
 
 // One boxed LCP with the bounds fixed; adds its pivots to r.
 LcpStatus solveFixedBounds(const LcpProblem& p, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
-                           const DantzigSettings& s, LcpResult& r) {
-  BoxedPivoting engine(p.A, p.b, lo, hi, s);
-  const LcpStatus status = engine.run(processingOrder(p), s.max_pivots_per_variable * p.size() + 16);
-  r.f = engine.f();
-  r.iterations += engine.pivots();
+                           const DantzigSettings& s, Workspace& ws, LcpResult& r) {
+  ws.engine.reset(p.A, p.b, lo, hi, s);
+  processingOrder(p, ws.order);
+  const LcpStatus status = ws.engine.run(ws.order, s.max_pivots_per_variable * p.size() + 16);
+  r.f = ws.engine.f();
+  r.iterations += ws.engine.pivots();
   return status;
 }
 
@@ -64,42 +72,53 @@ LcpStatus solveFixedBounds(const LcpProblem& p, const Eigen::VectorXd& lo, const
 // the error shrinks geometrically; a cap turns a non-converging case into MaxIterations.
 LcpResult solveDantzig(const LcpProblem& p, const DantzigSettings& s) {
   LcpResult r;
-  r.f = Eigen::VectorXd::Zero(p.b.size());
+  solveDantzig(p, s, r);
+  return r;
+}
+
+void solveDantzig(const LcpProblem& p, const DantzigSettings& s, LcpResult& r) {
+  thread_local Workspace ws;
+  r.status = LcpStatus::Failed;
+  r.iterations = 0;
+  r.friction_passes = 0;
+  r.residual = {};
+  r.f.setZero(p.b.size());
   if (*validate(p) != '\0') {
     r.w = p.b;
-    return r;
+    return;
   }
-  Eigen::VectorXd lo = p.lo, hi = p.hi;
+  Eigen::VectorXd &lo = ws.lo, &hi = ws.hi;
+  lo = p.lo;
+  hi = p.hi;
   const bool friction = hasFriction(p);
   if (friction) effectiveBounds(p, r.f, lo, hi);  // f = 0: friction bounds [0, 0]
-  r.status = solveFixedBounds(p, lo, hi, s, r);
-  std::vector<Bound> last_set;
+  r.status = solveFixedBounds(p, lo, hi, s, ws, r);
+  ws.last_set.clear();
   for (int pass = 1; friction && r.status == LcpStatus::Solved; ++pass) {
-    Eigen::VectorXd nlo, nhi;
+    Eigen::VectorXd &nlo = ws.next_lo, &nhi = ws.next_hi;
     effectiveBounds(p, r.f, nlo, nhi);
     if (boundsConverged(p, hi, nhi, s.friction_tolerance)) break;
     // Two passes with one active set: the rest of the passes would only converge geometrically
     // to the fixed point of that set, which one linear solve gives (friction_fixed_point.h).
-    std::vector<Bound> set = activeSet(r.f, lo, hi);
-    if (set == last_set) {
-      if (std::optional<Eigen::VectorXd> exact = solveFrictionFixedPoint(p, set, lo, hi)) {
+    activeSet(r.f, lo, hi, ws.set);
+    if (ws.set == ws.last_set) {
+      if (std::optional<Eigen::VectorXd> exact = solveFrictionFixedPoint(p, ws.set, lo, hi)) {
         r.f = *exact;
         ++r.friction_passes;
         break;
       }
     }
-    last_set = std::move(set);
+    ws.last_set.swap(ws.set);
     if (pass > s.max_friction_passes) {
       r.status = LcpStatus::MaxIterations;
       break;
     }
-    lo = nlo;
-    hi = nhi;
+    lo.swap(nlo);
+    hi.swap(nhi);
     r.friction_passes = pass;
-    r.status = solveFixedBounds(p, lo, hi, s, r);
+    r.status = solveFixedBounds(p, lo, hi, s, ws, r);
   }
   finish(p, r);
-  return r;
 }
 
 }  // namespace tumble::lcp

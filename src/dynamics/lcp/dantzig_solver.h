@@ -38,5 +38,9 @@ struct DantzigSettings {
 // Solves p; lo ≤ 0 ≤ hi is not required (a variable starts at the bound nearest 0). A must be
 // symmetric positive semi-definite for the termination and existence guarantees.
 LcpResult solveDantzig(const LcpProblem& p, const DantzigSettings& settings = {});
+// The same into `r`, whose vectors are reused: with the solver's own buffers (kept per thread), a
+// problem of the size of the last allocates nothing unless it takes the friction fixed point's
+// linear solve (friction_fixed_point.h).
+void solveDantzig(const LcpProblem& p, const DantzigSettings& settings, LcpResult& r);
 
 }  // namespace tumble::lcp

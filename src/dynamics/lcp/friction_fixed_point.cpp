@@ -7,13 +7,18 @@
 namespace tumble::lcp {
 
 std::vector<Bound> activeSet(const Eigen::VectorXd& f, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
-  std::vector<Bound> set(f.size(), Bound::Inside);
+  std::vector<Bound> set;
+  activeSet(f, lo, hi, set);
+  return set;
+}
+
+void activeSet(const Eigen::VectorXd& f, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, std::vector<Bound>& set) {
+  set.assign(f.size(), Bound::Inside);
   for (Eigen::Index i = 0; i < f.size(); ++i) {
     const double eps = 1e-12 * (1 + std::max(std::abs(f[i]), 0.0));
     if (f[i] <= lo[i] + eps) set[i] = Bound::Lower;
     else if (f[i] >= hi[i] - eps) set[i] = Bound::Upper;
   }
-  return set;
 }
 
 std::optional<Eigen::VectorXd> solveFrictionFixedPoint(const LcpProblem& p, const std::vector<Bound>& set,

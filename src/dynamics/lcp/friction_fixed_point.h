@@ -25,6 +25,7 @@ namespace tumble::lcp {
 // Which set each variable of an iterate is in, against the bounds it was solved with.
 enum class Bound : signed char { Lower = -1, Inside = 0, Upper = 1 };
 std::vector<Bound> activeSet(const Eigen::VectorXd& f, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
+void activeSet(const Eigen::VectorXd& f, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, std::vector<Bound>& set);
 
 // The exact solution for the given active set, if it solves p to `tolerance` relative to the
 // size of its terms; std::nullopt otherwise.

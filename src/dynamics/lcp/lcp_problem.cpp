@@ -39,7 +39,7 @@ void effectiveBounds(const LcpProblem& p, const Eigen::VectorXd& f, Eigen::Vecto
 }
 
 LcpResidual measureResidual(const LcpProblem& p, const Eigen::VectorXd& f, const Eigen::VectorXd& w) {
-  Eigen::VectorXd lo, hi;
+  thread_local Eigen::VectorXd lo, hi;   // kept: a warm step's solves allocate nothing
   effectiveBounds(p, f, lo, hi);
   LcpResidual r;
   for (int i = 0; i < p.size(); ++i) {

@@ -9,16 +9,35 @@
 #include "dynamics/joints/contact_joint_lcp.h"
 #include "dynamics/joints/joint_impulses.h"
 #include "dynamics/parallel_for.h"
+#include "dynamics/scratch_vector.h"
 
 namespace tumble {
+
+namespace {
+
+// What one island's solve needs, kept between steps on each thread (islands may be solved on
+// several): grown to the largest island seen, then reused.
+struct IslandScratch {
+  ContactRows rows;
+  std::vector<const ImpulseRecord*> last;
+  ScratchVector b, p;
+  ContactLcp exact;          // a small island's pivoting problem
+  lcp::LcpResult pivoted;
+};
+
+}  // namespace
 
 void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
                             const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats) {
   const double dt = settings.dt;
   const std::size_t m = contacts.size();
-  std::vector<const ImpulseRecord*> last(m);
-  std::vector<double> want(m), owed(m, 0);   // normal velocity target; landing speed carried in
-  std::vector<const Contact*> all(m);
+  std::vector<const ImpulseRecord*>& last = last_;
+  std::vector<double>&want = want_, &owed = owed_;   // normal velocity target; landing speed carried in
+  std::vector<const Contact*>& all = all_;
+  last.assign(m, nullptr);
+  want.assign(m, 0);
+  owed.assign(m, 0);
+  all.assign(m, nullptr);
   // Per contact, on the threads: last step's impulse (a search of the memory) and the targets.
   parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
@@ -32,8 +51,10 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   });
   stats.resting += static_cast<long>(m);
 
-  std::vector<Eigen::Vector3d> impulse(m, Eigen::Vector3d::Zero());   // on B, world axes
-  std::vector<double> normal_impulse(m, 0);
+  std::vector<Eigen::Vector3d>& impulse = impulse_;   // on B, world axes
+  std::vector<double>& normal_impulse = normal_impulse_;
+  impulse.assign(m, Eigen::Vector3d::Zero());
+  normal_impulse.assign(m, 0);
   // Each body's velocity once (the rows need it twice each; computing omega costs a rotation).
   velocity_.resize(world.bodies.size());
   spin_.resize(world.bodies.size());
@@ -45,30 +66,27 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   auto rowVelocityNow = [&](const ContactRow& r) {
     return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
   };
+  auto indexOf = [&](const Contact* c) { return static_cast<std::size_t>(c - contacts.data()); };
   // The impulses of one set of contacts (an island, or all of them) along their rows: applied, and
   // kept per contact for the records.
-  auto store = [&](const std::vector<const Contact*>& set, const ContactRows& rows, const Eigen::VectorXd& f) {
+  auto store = [&](std::span<const Contact* const> set, const ContactRows& rows, Eigen::Ref<const Eigen::VectorXd> f) {
     applyAlongRows(world, rows.rows, f);
-    const std::vector<Eigen::Vector3d> set_impulse = impulsePerContact(rows, f, 1.0);
     for (std::size_t k = 0; k < set.size(); ++k) {
-      const std::size_t i = static_cast<std::size_t>(set[k] - contacts.data());
-      impulse[i] += set_impulse[k];
+      const std::size_t i = indexOf(set[k]);
+      impulse[i] += impulseOfContact(rows, f, k, 1.0);
       normal_impulse[i] = f[rows.normal_row[k]];
     }
   };
   // The b of a set's rows: each row's velocity now, less its contact's normal target.
-  auto velocityTerms = [&](const std::vector<const Contact*>& set, const ContactRows& rows) {
-    Eigen::VectorXd b(rows.size());
+  auto velocityTerms = [&](std::span<const Contact* const> set, const ContactRows& rows, Eigen::Ref<Eigen::VectorXd> b) {
     for (int r = 0; r < rows.size(); ++r) b[r] = rowVelocityNow(rows.rows[r]);
-    for (std::size_t k = 0; k < set.size(); ++k)
-      b[rows.normal_row[k]] -= want[static_cast<std::size_t>(set[k] - contacts.data())];
-    return b;
+    for (std::size_t k = 0; k < set.size(); ++k) b[rows.normal_row[k]] -= want[indexOf(set[k])];
   };
   if (!world.joints.empty()) {
     // Joints tie the islands together and push on the contacts: every contact and every joint row
     // in one problem (joints/contact_joint_lcp.h).
     ContactLcp exact = buildContactLcp(world, all, std::vector<char>(m, 1));
-    exact.problem.b = velocityTerms(all, exact);
+    velocityTerms(all, exact, exact.problem.b);
     std::vector<JointRow> joint_rows;
     Eigen::VectorXd joint_b;
     jointStepRows(world, dt, joint_rows, joint_b);
@@ -82,20 +100,23 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
     // They share no moving body, so they may be solved on several threads: each reads the velocities
     // of before the solve and writes its own bodies' momenta and its own contacts' impulses.
-    const std::vector<std::vector<const Contact*>> islands = splitIntoIslands(world, all);
-    std::vector<ContactSolveStats> island_stats(islands.size());
-    parallelFor(settings.threads, islands.size(), [&](std::size_t k) {
-      const std::vector<const Contact*>& island = islands[k];
-      ContactSolveStats& own = island_stats[k];
+    islands_.split(world, all);
+    island_stats_.assign(islands_.size(), ContactSolveStats{});
+    parallelFor(settings.threads, islands_.size(), [&](std::size_t k) {
+      const std::span<const Contact* const> island = islands_[k];
+      ContactSolveStats& own = island_stats_[k];
+      thread_local IslandScratch scratch;
       // Gauss-Seidel first, warm-started: most islands (a pair of boxes meeting, a stack resting
       // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
       // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
       // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
-      const ContactRows rows = buildContactRows(world, island);
-      std::vector<const ImpulseRecord*> island_last(island.size());
-      const Eigen::VectorXd b = velocityTerms(island, rows);
-      for (std::size_t c = 0; c < island.size(); ++c)
-        island_last[c] = last[static_cast<std::size_t>(island[c] - contacts.data())];
+      const ContactRows& rows = scratch.rows;
+      buildContactRows(world, island, scratch.rows);
+      auto b = scratch.b.view(rows.size()), f = scratch.p.view(rows.size());
+      velocityTerms(island, rows, b);
+      scratch.last.resize(island.size());
+      for (std::size_t c = 0; c < island.size(); ++c) scratch.last[c] = last[indexOf(island[c])];
+      warmStart(rows, scratch.last, f);
       // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
       const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
       IslandImpulseSettings gs;
@@ -103,21 +124,22 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
                             : settings.time_stepping_sweeps;
       gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
       gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
-      IslandImpulses solved = solveIslandImpulses(world, rows, island, b, warmStart(rows, island_last), gs, own);
-      Eigen::VectorXd f = std::move(solved.p);
-      if (!solved.converged && small) {
-        ContactLcp exact = buildContactLcp(world, island, std::vector<char>(island.size(), 1));   // same rows
+      const bool converged = solveIslandImpulsesInPlace(world, rows, island, b, f, gs, own);
+      if (!converged && small) {
+        ContactLcp& exact = scratch.exact;
+        buildContactLcp(world, island, exact);   // the same rows
         exact.problem.b = b;
-        lcp::LcpResult r = solveContactLcp(exact.problem, own);
-        if (usableLcpAnswer(r, exact.problem)) f = r.f;
+        solveContactLcp(exact.problem, own, scratch.pivoted);
+        if (usableLcpAnswer(scratch.pivoted, exact.problem)) f = scratch.pivoted.f;
         else ++own.iterative_fallbacks;
       }
       store(island, rows, f);
     });
-    for (const ContactSolveStats& own : island_stats) stats += own;
+    for (const ContactSolveStats& own : island_stats_) stats += own;
   }
 
-  std::vector<ImpulseRecord> records(m);
+  std::vector<ImpulseRecord>& records = records_;
+  records.resize(m);
   parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
     records[i] = impulseRecord(world, c, impulse[i]);
@@ -128,7 +150,8 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     records[i].landing_speed = landing ? std::max(approach[i], owed[i]) : 0;
     records[i].landing_carried = carried ? last[i]->landing_carried + 1 : 0;
   });
-  memory_.replace(std::move(records));
+  // The memory takes these records and gives back last step's storage, for the next step's.
+  memory_.replace(records);
 }
 
 }  // namespace tumble

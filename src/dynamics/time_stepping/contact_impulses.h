@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "dynamics/contact.h"
+#include "dynamics/contact_islands.h"
 #include "dynamics/contact_solve_common.h"
 #include "dynamics/impulse_memory.h"
 #include "dynamics/settings.h"
@@ -50,7 +51,17 @@ class ContactImpulses {
 
  private:
   ImpulseMemory memory_;
-  std::vector<Eigen::Vector3d> velocity_, spin_;   // per body, this step (reused buffers)
+  // Buffers of a step, kept for the next: a warm step allocates nothing (the joints' one problem
+  // and a small island's pivoting solve aside; tests/dynamics/test_step_allocations.cpp).
+  std::vector<Eigen::Vector3d> velocity_, spin_;   // per body
+  std::vector<const ImpulseRecord*> last_;         // per contact: last step's record, or null
+  std::vector<double> want_, owed_;                // per contact: normal velocity target, bounce owed
+  std::vector<const Contact*> all_;
+  std::vector<Eigen::Vector3d> impulse_;           // per contact: on B, world axes
+  std::vector<double> normal_impulse_;
+  ContactIslands islands_;
+  std::vector<ContactSolveStats> island_stats_;
+  std::vector<ImpulseRecord> records_;
 };
 
 }  // namespace tumble

@@ -6,7 +6,8 @@
 namespace tumble {
 
 long DriftProjection::project(World& world, std::vector<Contact>& contacts, double tol) {
-  const BodyPairGroups grouped = groupByBodyPair(contacts);
+  groupByBodyPair(contacts, grouped_);
+  const BodyPairGroups& grouped = grouped_;
   const std::vector<std::size_t>& order = grouped.order;
   moved_.assign(world.bodies.size(), Eigen::Vector3d::Zero());
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(moved_[c.b] - moved_[c.a]); };

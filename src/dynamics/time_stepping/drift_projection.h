@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dynamics/contact.h"
+#include "dynamics/contact_islands.h"
 #include "dynamics/world.h"
 
 namespace tumble {
@@ -24,6 +25,7 @@ class DriftProjection {
 
  private:
   std::vector<Eigen::Vector3d> moved_;   // each body's displacement in this projection
+  BodyPairGroups grouped_;               // kept between steps: reused buffers
 };
 
 }  // namespace tumble
