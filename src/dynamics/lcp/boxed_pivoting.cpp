@@ -36,8 +36,36 @@ void BoxedPivoting::reset(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, co
   wScale_ = n > 0 ? std::max(A.diagonal().maxCoeff(), std::numeric_limits<double>::min()) : 1.0;
 }
 
+bool BoxedPivoting::seed(const std::vector<int>& clamped_guess, const Eigen::VectorXd& guess_f) {
+  const int n = static_cast<int>(f_.size());
+  for (int i = 0; i < n; ++i) f_[i] = std::clamp(guess_f[i], lo()[i], hi()[i]);
+  for (int i : clamped_guess)
+    if (lo()[i] < hi()[i] && factor_.add(A(), i, settings().dependence_tolerance)) set_[i] = Set::Clamped;
+  const auto& C = factor_.members();
+  const int k = factor_.size();
+  // A_CC f_C = -(b_C + A_CN f_N): with f_C zeroed, w_C is the right-hand side's negative.
+  for (int i : C) f_[i] = 0;
+  w_.noalias() = A() * f_;
+  w_ += b();
+  auto x = y_.head(k);
+  for (int r = 0; r < k; ++r) x[r] = -w_[C[r]];
+  factor_.solveInPlace(x);
+  bool inside = x.allFinite();
+  for (int r = 0; r < k && inside; ++r) inside = x[r] >= lo()[C[r]] && x[r] <= hi()[C[r]];
+  if (!inside) {
+    reset(A(), b(), lo(), hi(), settings());
+    return false;
+  }
+  for (int r = 0; r < k; ++r) f_[C[r]] = x[r];
+  w_.noalias() = A() * f_;
+  w_ += b();
+  for (int i : C) w_[i] = 0;
+  return true;
+}
+
 LcpStatus BoxedPivoting::run(const std::vector<int>& order, int budget) {
   for (int d : order) {
+    if (set_[d] != Set::Unprocessed) continue;   // clamped by seed()
     const LcpStatus s = drive(d, budget);
     if (s != LcpStatus::Solved) return s;
   }

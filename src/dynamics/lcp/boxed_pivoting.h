@@ -30,8 +30,16 @@ public:
   // one of the same size allocates nothing.
   void reset(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const Eigen::VectorXd& lo,
              const Eigen::VectorXd& hi, const DantzigSettings& settings);
-  // Drives the variables in `order` (each once), then repairs any that drifted; stops after `budget` pivots.
+  // Starts from a guess of the clamped set (an earlier friction pass's, whose bounds were close):
+  // its members are clamped at once, their forces solved with every other variable at `guess_f`
+  // moved into its bounds. Returns false, leaving the engine as reset() does, if a guessed member's
+  // force comes out outside its bounds; then the drives start from nothing.
+  bool seed(const std::vector<int>& clamped_guess, const Eigen::VectorXd& guess_f);
+  // Drives the variables in `order` (each once, unless seed() clamped it), then repairs any that
+  // drifted; stops after `budget` pivots.
   LcpStatus run(const std::vector<int>& order, int budget);
+  // The clamped set, in the factor's order.
+  const std::vector<int>& clamped() const { return factor_.members(); }
   const Eigen::VectorXd& f() const { return f_; }
   int pivots() const { return pivots_; }
 
