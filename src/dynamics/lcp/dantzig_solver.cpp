@@ -122,7 +122,7 @@ void solveDantzig(const LcpProblem& p, const DantzigSettings& s, LcpResult& r) {
     lo.swap(nlo);
     hi.swap(nhi);
     r.friction_passes = pass;
-    r.status = solveFixedBounds(p, lo, hi, s, ws, r, true);
+    r.status = solveFixedBounds(p, lo, hi, s, ws, r, s.seed_friction_passes);
   }
   finish(p, r);
 }

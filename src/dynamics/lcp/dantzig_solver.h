@@ -33,6 +33,9 @@ struct DantzigSettings {
   // friction_tolerance·(1 + max bound), at most max_friction_passes.
   int max_friction_passes = 100;
   double friction_tolerance = 1e-13;
+  // A pass after the first starts from the last pass's clamped set (BoxedPivoting::seed) instead
+  // of driving every variable from zero again; off only to measure what that saves.
+  bool seed_friction_passes = true;
 };
 
 // Solves p; lo ≤ 0 ≤ hi is not required (a variable starts at the bound nearest 0). A must be
