@@ -52,16 +52,16 @@ void finish(const LcpProblem& p, LcpResult& r) {
   r.residual = measureResidual(p, r.f, r.w);
 }
 
-// One boxed LCP with the bounds fixed; adds its pivots to r.
-// A later friction pass starts from the last pass's clamped set and forces (BoxedPivoting::seed):
-// its bounds moved only as far as the normal forces did, and most of its variables stay where they
-// were, where driving them all again from zero took 89 % of the pivots of a domino run.
+// One boxed LCP with the bounds fixed, its variables driven in ws.order; adds its pivots to r. A
+// `seeded` pass (a later friction pass) starts from the last pass's clamped set and forces
+// (BoxedPivoting::seed): its bounds moved only as far as the normal forces did, and most of its
+// variables stay where they were, where driving them all again from zero took 89 % of the pivots
+// of a domino run.
 LcpStatus solveFixedBounds(const LcpProblem& p, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
                            const DantzigSettings& s, Workspace& ws, LcpResult& r, bool seeded) {
   if (seeded) ws.clamped = ws.engine.clamped();
   ws.engine.reset(p.A, p.b, lo, hi, s);
   if (seeded) ws.engine.seed(ws.clamped, r.f);
-  processingOrder(p, ws.order);
   const LcpStatus status = ws.engine.run(ws.order, s.max_pivots_per_variable * p.size() + 16);
   r.f = ws.engine.f();
   r.iterations += ws.engine.pivots();
@@ -98,6 +98,7 @@ void solveDantzig(const LcpProblem& p, const DantzigSettings& s, LcpResult& r) {
   hi = p.hi;
   const bool friction = hasFriction(p);
   if (friction) effectiveBounds(p, r.f, lo, hi);  // f = 0: friction bounds [0, 0]
+  processingOrder(p, ws.order);   // the same for every pass
   r.status = solveFixedBounds(p, lo, hi, s, ws, r, false);
   ws.last_set.clear();
   for (int pass = 1; friction && r.status == LcpStatus::Solved; ++pass) {
