@@ -24,9 +24,10 @@ void printPipelineStats(const Pipeline& pipeline) {
                c.contacts.friction_fallbacks, c.contacts.merged_impacts);
   std::fprintf(stderr,
                "  resting islands solved by Gauss-Seidel %ld (%ld after pivoting stopped short; "
-               "%ld sweeps, %ld subspace steps, %ld solves left unconverged)\n",
+               "%ld sweeps, %ld subspace steps, %ld solves left unconverged, %ld of them scaled down so as not to add "
+               "energy)\n",
                c.contacts.iterative_islands, c.contacts.iterative_fallbacks, c.contacts.sweeps,
-               c.contacts.active_set_steps, c.contacts.unconverged_sweeps);
+               c.contacts.active_set_steps, c.contacts.unconverged_sweeps, c.contacts.passive_scaled);
   if (!c.model_choice.empty()) std::fprintf(stderr, "  contact model: %s\n", c.model_choice.c_str());
   if (!c.target_refinement.empty()) std::fprintf(stderr, "  %s\n", c.target_refinement.c_str());
   const ContactDetector::Work& w = pipeline.detectionWork();

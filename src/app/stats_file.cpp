@@ -36,6 +36,7 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
         {"friction_fallbacks", k.friction_fallbacks}, {"iterative_islands", k.iterative_islands},
         {"iterative_fallbacks", k.iterative_fallbacks}, {"sweeps", k.sweeps},
         {"unconverged_sweeps", k.unconverged_sweeps}, {"active_set_steps", k.active_set_steps},
+        {"passive_scaled", k.passive_scaled},
         {"merged_impacts", k.merged_impacts},
         {"frictional_found", pipeline.detectionWork().frictional_contacts},
         {"manifolds_reused", pipeline.detectionWork().manifolds_reused},

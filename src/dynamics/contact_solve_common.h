@@ -18,13 +18,15 @@ struct ContactSolveStats {
   long iterative_fallbacks = 0;     // of those: pivoting stopped short with unusable forces
   long sweeps = 0, unconverged_sweeps = 0;   // Gauss-Seidel sweeps; solves that hit the cap
   long active_set_steps = 0;        // subspace steps on islands Gauss-Seidel left unconverged
+  long passive_scaled = 0;          // unconverged answers scaled down so as not to add energy
   long merged_impacts = 0;          // pair impacts grown by neighbours that turned their lift-off back
 
   ContactSolveStats& operator+=(const ContactSolveStats& o) {
     colliding += o.colliding, resting += o.resting, pivots += o.pivots, failures += o.failures;
     friction_fallbacks += o.friction_fallbacks, iterative_islands += o.iterative_islands;
     iterative_fallbacks += o.iterative_fallbacks, sweeps += o.sweeps, unconverged_sweeps += o.unconverged_sweeps;
-    active_set_steps += o.active_set_steps, merged_impacts += o.merged_impacts;
+    active_set_steps += o.active_set_steps, passive_scaled += o.passive_scaled;
+    merged_impacts += o.merged_impacts;
     return *this;
   }
 };

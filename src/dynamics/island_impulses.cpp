@@ -1,6 +1,7 @@
 #include "dynamics/island_impulses.h"
 
 #include "dynamics/active_set_step.h"
+#include "dynamics/passive_impulses.h"
 #include "dynamics/scratch_vector.h"
 #include "dynamics/settings.h"
 
@@ -54,7 +55,12 @@ bool solveIslandImpulsesInPlace(const World& world, const ContactRows& rows, std
       }
     }
   }
-  if (!solved.converged) ++stats.unconverged_sweeps;
+  if (!solved.converged) {
+    ++stats.unconverged_sweeps;
+    // A warm start can leave an unconverged answer doing worse than no impulses: adding kinetic
+    // energy (passive_impulses.h).
+    if (keepPassive(world, rows.rows, b, limits, p) < 1) ++stats.passive_scaled;
+  }
   return solved.converged;
 }
 
