@@ -61,8 +61,14 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
                       int threads) {
   const std::size_t found = contacts.size();
   // Each pair of pieces once, and only pairs turning fast enough to matter; then each pair's swept
-  // contacts on the threads, appended in the pairs' order.
-  std::vector<std::size_t> firsts;
+  // contacts on the threads, appended in the pairs' order. The lists are kept between steps (per
+  // calling thread; a job's manifold per worker thread), so a warm step allocates nothing here.
+  thread_local std::vector<std::size_t> own_firsts;
+  thread_local std::vector<std::vector<Contact>> own_swept;
+  // Named by reference: inside the jobs a thread_local's name would be the worker's own.
+  std::vector<std::size_t>& firsts = own_firsts;
+  std::vector<std::vector<Contact>>& swept = own_swept;
+  firsts.clear();
   for (std::size_t i = 0; i < found; ++i) {
     const PiecePair pair = pairs[i];
     if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;
@@ -74,7 +80,8 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
       continue;
     firsts.push_back(i);
   }
-  std::vector<std::vector<Contact>> swept(firsts.size());
+  if (swept.size() < firsts.size()) swept.resize(firsts.size());
+  for (std::size_t job = 0; job < firsts.size(); ++job) swept[job].clear();
   parallelFor(threads, firsts.size(), [&](std::size_t job) {
     const std::size_t i = firsts[job];
     const PiecePair pair = pairs[i];
@@ -84,7 +91,7 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
     const FreeMotion ma = freeMotion(world, world.bodies[first.a], dt, gravity);
     const FreeMotion mb = freeMotion(world, world.bodies[first.b], dt, gravity);
     SatCache cache;
-    ContactManifold m;
+    thread_local ContactManifold m;
     if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) return;
     for (const ContactPoint& p : m.points) {
       if (p.depth <= tolerance) continue;
