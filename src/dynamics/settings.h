@@ -149,6 +149,12 @@ inline constexpr double kImmediateContact = 1e-6;
 // each reads the depths the earlier pushes left. One pass cannot keep up under a load (a column of
 // boxes sank 6-8 cm in the pile) or in a chain (a block pushed out of the one above into the ground).
 inline constexpr int kProjectionPasses = 8;
+// Time-stepping drift projection: sweeps over one pair's points within a pass at most (a face's
+// four corners come out level within a few; drift_projection.h).
+inline constexpr int kProjectionPairSweeps = 8;
+// Time-stepping drift projection: the most one push may turn a body (rad); a push that would turn
+// it further translates instead (drift_projection.h).
+inline constexpr double kProjectionMaxTurn = 1e-3;
 // Pivoting: passes over the friction bounds at most; the bounds settle to 1e-9 of the largest.
 inline constexpr int kMaxFrictionPasses = 12;
 inline constexpr double kFrictionTolerance = 1e-9;

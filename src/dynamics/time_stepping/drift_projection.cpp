@@ -1,6 +1,11 @@
 #include "dynamics/time_stepping/drift_projection.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
 #include "dynamics/contact_islands.h"
+#include "dynamics/contact_jacobian.h"
 #include "dynamics/settings.h"
 
 namespace tumble {
@@ -9,34 +14,100 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   groupByBodyPair(contacts, grouped_);
   const BodyPairGroups& grouped = grouped_;
   const std::vector<std::size_t>& order = grouped.order;
-  moved_.assign(world.bodies.size(), Eigen::Vector3d::Zero());
-  auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(moved_[c.b] - moved_[c.a]); };
+  const std::size_t bodies = world.bodies.size();
+  start_.resize(bodies);
+  inverse_inertia_.resize(bodies);
+  moved_.assign(bodies, Eigen::Vector3d::Zero());
+  turned_.assign(bodies, Eigen::Vector3d::Zero());
+  // Only the bodies a contact names are read below: the rest keep stale entries.
+  for (const Contact& c : contacts)
+    for (int k : {c.a, c.b}) {
+      start_[k] = world.bodies[k].x;
+      inverse_inertia_[k] = inverseInertiaWorld(world.bodies[k]);   // zero when static
+    }
+  // A material point at world p (at the start) has moved by Delta x + Delta theta x (p - x).
+  auto shift = [&](int k, const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    return moved_[k] + turned_[k].cross(p - start_[k]);
+  };
+  auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(shift(c.b, c.point) - shift(c.a, c.point)); };
+  // The push that moves c's two points apart by `depth` along its normal, with the least
+  // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n).
+  auto arms = [&](const Contact& c, Eigen::Vector3d& ta, Eigen::Vector3d& tb) {
+    ta = (c.point - start_[c.a]).cross(c.normal);
+    tb = (c.point - start_[c.b]).cross(c.normal);
+  };
+  // Without `turning`, the push translates the two bodies only (K = w_a + w_b).
+  auto stiffness = [&](const Contact& c, bool turning) {
+    const double k = world.bodies[c.a].inv_mass + world.bodies[c.b].inv_mass;
+    if (!turning) return k;
+    Eigen::Vector3d ta, tb;
+    arms(c, ta, tb);
+    return k + ta.dot(inverse_inertia_[c.a] * ta) + tb.dot(inverse_inertia_[c.b] * tb);
+  };
+  auto turnOf = [&](const Contact& c, double lambda) {
+    Eigen::Vector3d ta, tb;
+    arms(c, ta, tb);
+    return std::max((inverse_inertia_[c.a] * ta).norm(), (inverse_inertia_[c.b] * tb).norm()) * std::abs(lambda);
+  };
+  auto push = [&](const Contact& c, double lambda, bool turning) {
+    moved_[c.a] -= world.bodies[c.a].inv_mass * lambda * c.normal;
+    moved_[c.b] += world.bodies[c.b].inv_mass * lambda * c.normal;
+    if (!turning) return;
+    Eigen::Vector3d ta, tb;
+    arms(c, ta, tb);
+    turned_[c.a] -= inverse_inertia_[c.a] * ta * lambda;
+    turned_[c.b] += inverse_inertia_[c.b] * tb * lambda;
+  };
+  pushed_.assign(contacts.size(), 0);
   long pushes = 0;
   for (int pass = 0; pass < tuning::kProjectionPasses; ++pass) {
-    bool pushed = false;
+    bool moved_any = false;
     for (const auto& [begin, end] : grouped.groups) {
-      std::size_t deepest = order[begin];
-      for (std::size_t k = begin + 1; k < end; ++k)
-        if (depthNow(contacts[order[k]]) > depthNow(contacts[deepest])) deepest = order[k];
-      const Contact& c = contacts[deepest];
-      const double depth = depthNow(c);
-      if (depth <= tol) continue;
-      RigidBody& A = world.bodies[c.a];
-      RigidBody& B = world.bodies[c.b];
-      const double wa = A.inv_mass, wb = B.inv_mass;
-      if (wa + wb <= 0) continue;
-      const double push = depth - 0.5 * tol;
-      const Eigen::Vector3d da = -c.normal * (push * wa / (wa + wb)), db = c.normal * (push * wb / (wa + wb));
-      A.x += da;
-      B.x += db;
-      moved_[c.a] += da;
-      moved_[c.b] += db;
+      bool deep = false;
+      for (std::size_t k = begin; k < end && !deep; ++k) deep = depthNow(contacts[order[k]]) > tol;
+      if (!deep) continue;
+      // The pair's points in turn: each pushed back to half the tolerance, a push that proves too
+      // much taken back only as far as the pair has pushed at that point in this pass.
+      for (std::size_t k = begin; k < end; ++k) pushed_[order[k]] = 0;
+      for (int sweep = 0; sweep < tuning::kProjectionPairSweeps; ++sweep) {
+        double largest = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+          const Contact& c = contacts[order[k]];
+          double stiff = stiffness(c, true);
+          if (!(stiff > 0)) continue;
+          double& total = pushed_[order[k]];
+          double lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
+          if (lambda == 0 || (total == 0 && lambda < 0)) continue;
+          // Drift turns a body by far less than kProjectionMaxTurn; a push that would turn it
+          // more is an overlap a violent step left, and is made by translation (see the header).
+          const bool turning = turnOf(c, lambda) <= tuning::kProjectionMaxTurn;
+          if (!turning) {
+            stiff = stiffness(c, false);
+            lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
+          }
+          push(c, lambda, turning);
+          total += lambda;
+          largest = std::max(largest, std::abs(lambda) * stiff);
+        }
+        if (largest <= 0.5 * tol) break;
+      }
       ++pushes;
-      pushed = true;
+      moved_any = true;
     }
-    if (!pushed) break;
+    if (!moved_any) break;
   }
   for (Contact& c : contacts) c.depth = depthNow(c);
+  for (const Contact& c : contacts)
+    for (int k : {c.a, c.b}) {
+      RigidBody& body = world.bodies[k];
+      if (body.is_static) continue;
+      body.x = start_[k] + moved_[k];
+      const double angle = turned_[k].norm();
+      if (angle > 0) body.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, turned_[k] / angle)) * body.q).normalized();
+      turned_[k].setZero();   // a body named by several contacts turns once
+      moved_[k].setZero();
+      start_[k] = body.x;
+    }
   return pushes;
 }
 
