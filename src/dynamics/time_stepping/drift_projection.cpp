@@ -31,32 +31,28 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   };
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(shift(c.b, c.point) - shift(c.a, c.point)); };
   // The push that moves c's two points apart by `depth` along its normal, with the least
-  // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n).
-  auto arms = [&](const Contact& c, Eigen::Vector3d& ta, Eigen::Vector3d& tb) {
-    ta = (c.point - start_[c.a]).cross(c.normal);
-    tb = (c.point - start_[c.b]).cross(c.normal);
+  // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n);
+  // a unit push turns A by -I_a^-1 (r_a x n) and B by I_b^-1 (r_b x n). Without turning, the push
+  // translates the two bodies only (K = w_a + w_b).
+  struct Response {
+    double translating = 0, turning = 0;   // K
+    Eigen::Vector3d turn_a, turn_b;        // the turns of a unit push
   };
-  // Without `turning`, the push translates the two bodies only (K = w_a + w_b).
-  auto stiffness = [&](const Contact& c, bool turning) {
-    const double k = world.bodies[c.a].inv_mass + world.bodies[c.b].inv_mass;
-    if (!turning) return k;
-    Eigen::Vector3d ta, tb;
-    arms(c, ta, tb);
-    return k + ta.dot(inverse_inertia_[c.a] * ta) + tb.dot(inverse_inertia_[c.b] * tb);
+  auto responseOf = [&](const Contact& c) {
+    Response r;
+    const Eigen::Vector3d ta = (c.point - start_[c.a]).cross(c.normal), tb = (c.point - start_[c.b]).cross(c.normal);
+    r.turn_a = inverse_inertia_[c.a] * ta;
+    r.turn_b = inverse_inertia_[c.b] * tb;
+    r.translating = world.bodies[c.a].inv_mass + world.bodies[c.b].inv_mass;
+    r.turning = r.translating + ta.dot(r.turn_a) + tb.dot(r.turn_b);
+    return r;
   };
-  auto turnOf = [&](const Contact& c, double lambda) {
-    Eigen::Vector3d ta, tb;
-    arms(c, ta, tb);
-    return std::max((inverse_inertia_[c.a] * ta).norm(), (inverse_inertia_[c.b] * tb).norm()) * std::abs(lambda);
-  };
-  auto push = [&](const Contact& c, double lambda, bool turning) {
+  auto push = [&](const Contact& c, const Response& r, double lambda, bool turning) {
     moved_[c.a] -= world.bodies[c.a].inv_mass * lambda * c.normal;
     moved_[c.b] += world.bodies[c.b].inv_mass * lambda * c.normal;
     if (!turning) return;
-    Eigen::Vector3d ta, tb;
-    arms(c, ta, tb);
-    turned_[c.a] -= inverse_inertia_[c.a] * ta * lambda;
-    turned_[c.b] += inverse_inertia_[c.b] * tb * lambda;
+    turned_[c.a] -= r.turn_a * lambda;
+    turned_[c.b] += r.turn_b * lambda;
   };
   pushed_.assign(contacts.size(), 0);
   long pushes = 0;
@@ -73,19 +69,20 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
         double largest = 0;
         for (std::size_t k = begin; k < end; ++k) {
           const Contact& c = contacts[order[k]];
-          double stiff = stiffness(c, true);
+          const Response r = responseOf(c);
+          double stiff = r.turning;
           if (!(stiff > 0)) continue;
           double& total = pushed_[order[k]];
           double lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
           if (lambda == 0 || (total == 0 && lambda < 0)) continue;
           // Drift turns a body by far less than kProjectionMaxTurn; a push that would turn it
           // more is an overlap a violent step left, and is made by translation (see the header).
-          const bool turning = turnOf(c, lambda) <= tuning::kProjectionMaxTurn;
+          const bool turning = std::max(r.turn_a.norm(), r.turn_b.norm()) * std::abs(lambda) <= tuning::kProjectionMaxTurn;
           if (!turning) {
-            stiff = stiffness(c, false);
+            stiff = r.translating;
             lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
           }
-          push(c, lambda, turning);
+          push(c, r, lambda, turning);
           total += lambda;
           largest = std::max(largest, std::abs(lambda) * stiff);
         }
