@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_jacobian.h"
@@ -30,14 +31,8 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
     return moved_[k] + turned_[k].cross(p - start_[k]);
   };
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(shift(c.b, c.point) - shift(c.a, c.point)); };
-  // The push that moves c's two points apart by `depth` along its normal, with the least
-  // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n);
-  // a unit push turns A by -I_a^-1 (r_a x n) and B by I_b^-1 (r_b x n). Without turning, the push
-  // translates the two bodies only (K = w_a + w_b).
-  struct Response {
-    double translating = 0, turning = 0;   // K
-    Eigen::Vector3d turn_a, turn_b;        // the turns of a unit push
-  };
+  // A contact's Response (the header) is fixed for the whole projection (start poses, start inertia), so worked out once per contact,
+  // at the first visit of its pair.
   auto responseOf = [&](const Contact& c) {
     Response r;
     const Eigen::Vector3d ta = (c.point - start_[c.a]).cross(c.normal), tb = (c.point - start_[c.b]).cross(c.normal);
@@ -45,6 +40,7 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
     r.turn_b = inverse_inertia_[c.b] * tb;
     r.translating = world.bodies[c.a].inv_mass + world.bodies[c.b].inv_mass;
     r.turning = r.translating + ta.dot(r.turn_a) + tb.dot(r.turn_b);
+    r.largest_turn = std::max(r.turn_a.norm(), r.turn_b.norm());
     return r;
   };
   auto push = [&](const Contact& c, const Response& r, double lambda, bool turning) {
@@ -55,21 +51,39 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
     turned_[c.b] += r.turn_b * lambda;
   };
   pushed_.assign(contacts.size(), 0);
+  responses_.resize(contacts.size());
+  has_response_.assign(contacts.size(), 0);
+  // A pair's depths change only when one of its bodies is pushed, so a pair found shallow is not
+  // looked at again until one of them has been: pushes are numbered, and each body keeps the number
+  // of its last, each pair the number current when it was found shallow.
+  long pushed_so_far = 0;
+  last_push_.assign(bodies, -1);
+  found_shallow_.assign(grouped.groups.size(), std::numeric_limits<long>::min());
   long pushes = 0;
   for (int pass = 0; pass < tuning::kProjectionPasses; ++pass) {
     bool moved_any = false;
-    for (const auto& [begin, end] : grouped.groups) {
+    for (std::size_t g = 0; g < grouped.groups.size(); ++g) {
+      const auto [begin, end] = grouped.groups[g];
+      const Contact& named = contacts[order[begin]];
+      if (std::max(last_push_[named.a], last_push_[named.b]) <= found_shallow_[g]) continue;
       bool deep = false;
       for (std::size_t k = begin; k < end && !deep; ++k) deep = depthNow(contacts[order[k]]) > tol;
-      if (!deep) continue;
+      if (!deep) {
+        found_shallow_[g] = pushed_so_far;
+        continue;
+      }
       // The pair's points in turn: each pushed back to half the tolerance, a push that proves too
       // much taken back only as far as the pair has pushed at that point in this pass.
-      for (std::size_t k = begin; k < end; ++k) pushed_[order[k]] = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::size_t i = order[k];
+        pushed_[i] = 0;
+        if (!has_response_[i]) responses_[i] = responseOf(contacts[i]), has_response_[i] = 1;
+      }
       for (int sweep = 0; sweep < tuning::kProjectionPairSweeps; ++sweep) {
         double largest = 0;
         for (std::size_t k = begin; k < end; ++k) {
           const Contact& c = contacts[order[k]];
-          const Response r = responseOf(c);
+          const Response& r = responses_[order[k]];
           double stiff = r.turning;
           if (!(stiff > 0)) continue;
           double& total = pushed_[order[k]];
@@ -77,12 +91,15 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
           if (lambda == 0 || (total == 0 && lambda < 0)) continue;
           // Drift turns a body by far less than kProjectionMaxTurn; a push that would turn it
           // more is an overlap a violent step left, and is made by translation (see the header).
-          const bool turning = std::max(r.turn_a.norm(), r.turn_b.norm()) * std::abs(lambda) <= tuning::kProjectionMaxTurn;
+          const bool turning = r.largest_turn * std::abs(lambda) <= tuning::kProjectionMaxTurn;
           if (!turning) {
             stiff = r.translating;
             lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
           }
           push(c, r, lambda, turning);
+          ++pushed_so_far;
+          for (int body : {c.a, c.b})
+            if (!world.bodies[body].is_static) last_push_[body] = pushed_so_far;
           total += lambda;
           largest = std::max(largest, std::abs(lambda) * stiff);
         }

@@ -46,7 +46,20 @@ class DriftProjection {
   // world axes), and its inverse inertia in world axes at the start.
   std::vector<Eigen::Vector3d> start_, moved_, turned_;
   std::vector<Eigen::Matrix3d> inverse_inertia_;
+  // The push that moves a contact's two points apart by `depth` along its normal, with the least
+  // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n);
+  // a unit push turns A by -I_a^-1 (r_a x n) and B by I_b^-1 (r_b x n). Without turning, the push
+  // translates the two bodies only (K = w_a + w_b).
+  struct Response {
+    double translating = 0, turning = 0;   // K
+    Eigen::Vector3d turn_a, turn_b;        // the turns of a unit push
+    double largest_turn = 0;               // the larger of their norms
+  };
   std::vector<double> pushed_;           // per contact: the push it has given in this pass (m kg)
+  std::vector<Response> responses_;      // per contact, once its pair is first visited
+  std::vector<char> has_response_;
+  std::vector<long> last_push_;          // per body: the number of the last push that moved it
+  std::vector<long> found_shallow_;      // per pair: the number of pushes made when it was last found shallow
   BodyPairGroups grouped_;               // kept between steps: reused buffers
 };
 
