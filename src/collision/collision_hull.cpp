@@ -54,6 +54,7 @@ CollisionHull makeCollisionHull(const ConvexPiece& piece) {
   hull.centroid /= double(piece.vertices.size());
   hull.radius = pieceRadius(piece);
   hull.size = (hi - lo).maxCoeff() + 2 * (piece.radius_m + piece.disc_radius_m);
+  hull.box = recogniseBox(piece, hull.centroid);
   return hull;
 }
 

@@ -4,8 +4,10 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <vector>
 
+#include "collision/box_shape.h"
 #include "geometry/convex_piece.h"
 
 namespace tumble {
@@ -18,6 +20,7 @@ struct CollisionHull {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // vertex mean: an interior point (m)
   double radius = 0;                           // max |v| about the body origin (m)
   double size = 0;                             // max extent of the vertices (m): scales tolerances
+  std::optional<BoxShape> box;                 // set when the piece is a rectangular box
 };
 
 // Asserts the piece is a closed hull: every edge borders exactly two faces.

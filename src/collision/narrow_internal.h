@@ -89,6 +89,10 @@ bool edgeAxis(const HullView& a, int ea, const HullView& b, int eb, Eigen::Vecto
               double& separation);
 AxisQuery queryEdges(const HullView& a, const HullView& b, double stop_above);
 
+// box_sat.cpp: the same for two boxes, from their axes and half extents.
+AxisQuery queryBoxEdges(const HullView& a, const BoxShape& box_a, const HullView& b, const BoxShape& box_b,
+                        double stop_above);
+
 // clip.cpp: contacts in the working frame; the normal of `out` is set from A to B.
 bool faceContact(const HullView& ref, int ref_face, const HullView& inc, bool ref_is_a,
                  double margin, ContactManifold& out);
