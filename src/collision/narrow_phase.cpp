@@ -102,7 +102,8 @@ SatResult fullSat(const PairView& p, double stop_above, SatCache& cache) {
     cache = {Axis::FaceB, -1, r.face_b.index_b, cache.last_use, cache.early_exits};
     return r.separated = true, r;
   }
-  const std::optional<BoxShape>&box_a = p.a.hull->box, &box_b = p.b.hull->box;
+  const std::optional<BoxShape>& box_a = p.a.hull->box;
+  const std::optional<BoxShape>& box_b = p.b.hull->box;
   r.edges = box_a && box_b ? narrow::queryBoxEdges(p.a, *box_a, p.b, *box_b, stop_above)
                            : narrow::queryEdges(p.a, p.b, stop_above);
   if (r.edges.separation > stop_above) {

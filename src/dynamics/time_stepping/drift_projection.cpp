@@ -31,8 +31,8 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
     return moved_[k] + turned_[k].cross(p - start_[k]);
   };
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(shift(c.b, c.point) - shift(c.a, c.point)); };
-  // A contact's Response (the header) is fixed for the whole projection (start poses, start inertia), so worked out once per contact,
-  // at the first visit of its pair.
+  // A contact's Response (the header) is fixed for the whole projection (start poses, start
+  // inertia), so it is worked out once per contact, at the first visit of its pair.
   auto responseOf = [&](const Contact& c) {
     Response r;
     const Eigen::Vector3d ta = (c.point - start_[c.a]).cross(c.normal), tb = (c.point - start_[c.b]).cross(c.normal);
