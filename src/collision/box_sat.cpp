@@ -21,7 +21,7 @@ AxisQuery queryBoxEdges(const HullView& a, const BoxShape& box_a, const HullView
   const Eigen::Vector3d between = b.centroid - a.centroid;
   AxisQuery best;
   for (int i = 0; i < 3; ++i) {
-    const int a1 = i == 0 ? 1 : 0, a2 = i == 2 ? 1 : 2;   // A's other two axes, in increasing order
+    const auto [a1, a2] = otherAxes(i);
     for (int j = 0; j < 3; ++j) {
       Eigen::Vector3d n = axis_a[i].cross(axis_b[j]);
       const double len2 = n.squaredNorm();
@@ -31,7 +31,7 @@ AxisQuery queryBoxEdges(const HullView& a, const BoxShape& box_a, const HullView
       // The support corners. An axis lying in a face plane of either box (a component of zero)
       // meets that face's edges at their ends, where the Gauss-map test is strict: the face axes
       // give that separation, so the axis is left to them, as there.
-      const int b1 = j == 0 ? 1 : 0, b2 = j == 2 ? 1 : 2;
+      const auto [b1, b2] = otherAxes(j);
       const double ca1 = n.dot(axis_a[a1]), ca2 = n.dot(axis_a[a2]);
       const double cb1 = -n.dot(axis_b[b1]), cb2 = -n.dot(axis_b[b2]);
       if (ca1 == 0 || ca2 == 0 || cb1 == 0 || cb2 == 0) continue;

@@ -56,7 +56,7 @@ std::optional<BoxShape> recogniseBox(const ConvexPiece& piece, const Eigen::Vect
     int k = 0;
     for (int m = 1; m < 3; ++m)
       if (std::abs(along.dot(axis[m])) > std::abs(along.dot(axis[k]))) k = m;
-    const int first = k == 0 ? 1 : 0, second = k == 2 ? 1 : 2;
+    const auto [first, second] = otherAxes(k);
     int& slot = box.edge[k][middle.dot(axis[first]) > 0][middle.dot(axis[second]) > 0];
     if (slot >= 0) return std::nullopt;
     slot = e;

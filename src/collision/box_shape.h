@@ -19,6 +19,9 @@ struct BoxShape {
   std::array<std::array<std::array<int, 2>, 2>, 3> edge{};
 };
 
+// The two axes other than k, in increasing order: the order BoxShape::edge files corners by.
+constexpr std::array<int, 2> otherAxes(int k) { return {k == 0 ? 1 : 0, k == 2 ? 1 : 2}; }
+
 // The box, if `piece` is one: 8 vertices, 6 four-sided faces in three opposite pairs whose normals
 // are orthogonal, every vertex at a corner of the box the faces bound to within rounding. A
 // parallelepiped, a mesh box whose corners were written to a few decimals, or anything else is not

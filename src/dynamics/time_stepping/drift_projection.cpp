@@ -20,9 +20,13 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   inverse_inertia_.resize(bodies);
   moved_.assign(bodies, Eigen::Vector3d::Zero());
   turned_.assign(bodies, Eigen::Vector3d::Zero());
-  // Only the bodies a contact names are read below: the rest keep stale entries.
+  // Only the bodies a contact names are read below: the rest keep stale entries. Each once,
+  // though a body in a pile is named by a dozen contacts.
+  named_.assign(bodies, 0);
   for (const Contact& c : contacts)
     for (int k : {c.a, c.b}) {
+      if (named_[k]) continue;
+      named_[k] = 1;
       start_[k] = world.bodies[k].x;
       inverse_inertia_[k] = inverseInertiaWorld(world.bodies[k]);   // zero when static
     }

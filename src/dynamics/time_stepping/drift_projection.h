@@ -46,6 +46,7 @@ class DriftProjection {
   // world axes), and its inverse inertia in world axes at the start.
   std::vector<Eigen::Vector3d> start_, moved_, turned_;
   std::vector<Eigen::Matrix3d> inverse_inertia_;
+  std::vector<char> named_;              // per body: named by a contact of this projection
   // The push that moves a contact's two points apart by `depth` along its normal, with the least
   // mass-weighted motion: lambda = depth / K, K = w_a + w_b + (r_a x n) I_a^-1 (r_a x n) + (r_b x n) I_b^-1 (r_b x n);
   // a unit push turns A by -I_a^-1 (r_a x n) and B by I_b^-1 (r_b x n). Without turning, the push
