@@ -105,6 +105,7 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     if (count == jobs_.size()) jobs_.emplace_back();
     return jobs_[count++];
   };
+  memories_.beginStep();
   for (const ProxyPair& c : candidates_) {
     const Piece& pa = pieces_[c.a];
     const Piece& pb = pieces_[c.b];
@@ -117,9 +118,12 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
     // 10 000-box pile took 15 % longer when it did).
     const bool slow = job.margin <= 2 * settings.margin_m;
     job.keep = slack > 0 && slow && keeps(pa) && keeps(pb);
-    job.memory = &caches_[job.key];
+    job.memory_index = memories_.next(job.key);   // candidates come sorted
     job.ground_kept = nullptr;
   }
+  memories_.endStep();
+  const std::size_t pair_jobs = count;
+  for (std::size_t k = 0; k < pair_jobs; ++k) jobs_[k].memory = &memories_[jobs_[k].memory_index];
   if (slack > 0) ground_kept_.resize(planes_.size() * pieces_.size());
   for (std::size_t g = 0; g < planes_.size(); ++g) {
     const int plane = planes_[g];
@@ -131,6 +135,7 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
       job.margin = settings.margin_m + reachOf(pieces_[i].body);
       const bool slow = job.margin <= 2 * settings.margin_m;   // as for two pieces, above
       job.keep = slack > 0 && slow && keeps(pieces_[i]);
+      job.memory_index = -1;
       job.memory = nullptr;
       job.ground_kept = slack > 0 ? &ground_kept_[g * pieces_.size() + i] : nullptr;
     }
@@ -229,7 +234,7 @@ void ContactDetector::pairContacts(const World& world, const PiecePair& pair, do
     found = collideGround(*pa.shape, pose_a, world.bodies[~pair.piece_b].x.z(), margin_m, manifold_);
   } else {
     const Piece& pb = pieces_[pair.piece_b];
-    found = collide(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), margin_m, caches_[pair].sat, manifold_);
+    found = collide(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), margin_m, memories_.find(pair).sat, manifold_);
   }
   if (found) addPairContacts(world, pair, manifold_, out, nullptr);
 }
@@ -254,7 +259,7 @@ double ContactDetector::maxDepth(const World& world, const std::vector<PiecePair
       depth = -groundSeparation(*pa.shape, pose_a, world.bodies[~pair.piece_b].x.z());
     } else {
       const Piece& pb = pieces_[pair.piece_b];
-      depth = -separation(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), caches_[pair].sat);
+      depth = -separation(pa.hull, pose_a, pb.hull, poseOf(world.bodies[pb.body]), memories_.find(pair).sat);
     }
     deepest = std::max(deepest, depth);
   }

@@ -14,15 +14,10 @@
 #include "collision/kept_manifold.h"
 #include "collision/narrow_phase.h"
 #include "dynamics/contact.h"
+#include "dynamics/pair_memories.h"
 #include "dynamics/world.h"
 
 namespace tumble {
-
-// Identifies a pair of pieces (or a piece and a ground plane) across steps.
-struct PiecePair {
-  int piece_a = -1, piece_b = -1;   // piece ids; a ground plane is ~body index (negative)
-  friend auto operator<=>(const PiecePair&, const PiecePair&) = default;
-};
 
 class ContactDetector {
  public:
@@ -111,12 +106,6 @@ class ContactDetector {
   void updateBoxes(double margin, const std::vector<double>* reach);   // from poses_
   void addPairContacts(const World& world, const PiecePair& pair, const ContactManifold& m,
                        std::vector<Contact>& out, std::vector<PiecePair>* pairs) const;
-  // What is kept per pair of pieces between steps: the narrow phase's cached axis, and the
-  // manifold when detection reuses them.
-  struct PairMemory {
-    SatCache sat;
-    KeptManifold kept;
-  };
   // The manifold of two pieces or of a piece and the ground within `margin`, from the kept one
   // where it may be reused (`reused` set), else from the narrow phase (then kept); false when none.
   bool keptPairManifold(PairMemory& memory, const Piece& pa, const Piece& pb, double margin, double slack,
@@ -129,7 +118,8 @@ class ContactDetector {
     PiecePair key;
     double margin = 0;
     bool keep = false;                      // through the kept manifold
-    PairMemory* memory = nullptr;           // two pieces
+    int memory_index = -1;                  // two pieces: in memories_
+    PairMemory* memory = nullptr;           // set once every pair of the step has its memory
     KeptManifold* ground_kept = nullptr;    // a piece and the ground, when keeping
     bool found = false, reused = false;     // outputs
     ContactManifold manifold;
@@ -142,7 +132,7 @@ class ContactDetector {
   std::vector<int> planes_;                      // body indices of ground planes
   SweepAndPrune broad_;
   std::vector<ProxyPair> candidates_;
-  std::map<PiecePair, PairMemory> caches_;       // ordered: deterministic iteration
+  PairMemories memories_;                        // per pair of pieces the broad phase reports
   std::vector<KeptManifold> ground_kept_;        // per (plane, piece), when reusing
   // The tunnelling bound's own broad phase and axis caches: its boxes are grown by each body's
   // reach, and it leaves the narrow phase's cached features (its face hysteresis) untouched.
