@@ -4,6 +4,8 @@
 // give the separating plane (Gregorius, GDC 2013/2015).
 #include <array>
 #include <cassert>
+#include <cmath>
+#include <optional>
 
 #include "collision/narrow_internal.h"
 
@@ -12,6 +14,14 @@ namespace tumble::narrow {
 // Gap between the plane of `face` of ref and the deepest vertex of other along its normal.
 double faceSeparation(const HullView& ref, int face, const HullView& other) {
   const Eigen::Vector3d n = ref.normals[face];
+  // A box's deepest point along n lies its support radius, sum_k half_k |n . axis_k|, below its
+  // centre: three products for the eight corners' (box_shape.h puts them there to 1e-12 of the
+  // size). A box against a box spent a fifth of its narrow phase here.
+  if (const std::optional<BoxShape>& box = other.hull->box) {
+    double radius = 0;
+    for (int k = 0; k < 3; ++k) radius += box->half[k] * std::abs(n.dot(other.normals[box->plus_face[k]]));
+    return n.dot(other.centroid) - radius - ref.offsets[face];
+  }
   double lowest = INFINITY;
   for (int v = 0; v < other.vertexCount(); ++v) lowest = std::min(lowest, n.dot(other.vertices[v]));
   return lowest - ref.offsets[face];

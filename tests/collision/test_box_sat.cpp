@@ -125,3 +125,27 @@ TEST_CASE("box edge query: boxes sharing an axis leave their edge axes to the fa
   CHECK(narrow::queryEdges(native.view, moved.view, INFINITY).separation == -INFINITY);
   CHECK(narrow::queryBoxEdges(native.view, *h.box, moved.view, *h.box, INFINITY).separation == -INFINITY);
 }
+
+TEST_CASE("box face separation: a box's support radius gives its deepest corner's gap", "[narrow][box]") {
+  // faceSeparation takes a box's lowest point along the face normal from its centre and half
+  // extents; here against the lowest of its eight corners, for a box face and for a general hull's.
+  const ConvexPiece plank = makeBox(Vector3d(0.6, 0.1, 0.03)), cube = makeBox(Vector3d(0.2, 0.2, 0.2));
+  std::string why;
+  const ConvexPiece wedge = *convexHull({{0, 0, 0}, {0.5, 0, 0}, {0, 0.4, 0}, {0, 0, 0.3}, {0.2, 0.3, 0.25}}, &why);
+  const CollisionHull b = makeCollisionHull(cube);
+  REQUIRE(b.box);
+  std::mt19937 rng(11);
+  for (const ConvexPiece* ref_piece : {&plank, &wedge}) {
+    const CollisionHull a = makeCollisionHull(*ref_piece);
+    const MovedView native(a, Eigen::Isometry3d::Identity());
+    for (int trial = 0; trial < 500; ++trial) {
+      const MovedView moved(b, randomPose(rng, 0.7));
+      for (int f = 0; f < native.view.faceCount(); ++f) {
+        double lowest = INFINITY;
+        for (const Vector3d& v : moved.vertices) lowest = std::min(lowest, native.view.normals[f].dot(v));
+        CHECK(narrow::faceSeparation(native.view, f, moved.view) ==
+              Approx(lowest - native.view.offsets[f]).margin(1e-12 * 1.2));
+      }
+    }
+  }
+}
