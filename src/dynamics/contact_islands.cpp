@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "dynamics/body_pair_order.h"
+
 namespace tumble {
 namespace {
 
@@ -63,13 +65,11 @@ BodyPairGroups groupByBodyPair(const std::vector<Contact>& contacts) {
 
 void groupByBodyPair(const std::vector<Contact>& contacts, BodyPairGroups& out) {
   const std::size_t m = contacts.size();
-  out.order.resize(m);
   out.groups.clear();
-  std::iota(out.order.begin(), out.order.end(), std::size_t{0});
   auto pairOf = [&](std::size_t i) { return std::make_pair(contacts[i].a, contacts[i].b); };
-  // Stable within a pair by sorting on (pair, index): std::stable_sort allocates a merge buffer.
-  std::sort(out.order.begin(), out.order.end(),
-            [&](std::size_t x, std::size_t y) { return std::make_pair(pairOf(x), x) < std::make_pair(pairOf(y), y); });
+  thread_local BodyPairOrderScratch scratch;
+  orderByBodyPair(m, [&](std::size_t i) { return contacts[i].a; }, [&](std::size_t i) { return contacts[i].b; },
+                  out.order, scratch);
   for (std::size_t k = 0; k < m;) {
     std::size_t end = k;
     while (end < m && pairOf(out.order[end]) == pairOf(out.order[k])) ++end;

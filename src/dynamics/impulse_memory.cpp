@@ -1,7 +1,8 @@
 #include "dynamics/impulse_memory.h"
 
 #include <algorithm>
-#include <numeric>
+
+#include "dynamics/body_pair_order.h"
 
 namespace tumble {
 namespace {
@@ -37,14 +38,10 @@ const ImpulseRecord* ImpulseMemory::find(const World& world, const Contact& c, d
 }
 
 void ImpulseMemory::replace(const std::vector<ImpulseRecord>& records) {
-  // A stable sort by pair, as a sort by (pair, place) of the records' places: std::stable_sort
-  // would allocate its merge buffer at every step.
-  order_.resize(records.size());
-  std::iota(order_.begin(), order_.end(), std::size_t{0});
-  std::sort(order_.begin(), order_.end(), [&](std::size_t x, std::size_t y) {
-    const ImpulseRecord &rx = records[x], &ry = records[y];
-    return pairBefore(rx, ry.a, ry.b) || (!pairBefore(ry, rx.a, rx.b) && x < y);
-  });
+  // Sorted by pair, stable within a pair.
+  thread_local BodyPairOrderScratch scratch;
+  orderByBodyPair(records.size(), [&](std::size_t i) { return records[i].a; }, [&](std::size_t i) { return records[i].b; },
+                  order_, scratch);
   spare_.resize(records.size());
   for (std::size_t k = 0; k < order_.size(); ++k) spare_[k] = records[order_[k]];
   records_.swap(spare_);
