@@ -2,7 +2,7 @@
 // manifold), held only while the broad phase reports the pair: a pair whose boxes have parted is
 // forgotten, as Bullet and Box2D destroy a pair's persistent manifold when its boxes stop
 // overlapping. So the memory held is that of the pairs near one another now, not of every pair
-// that ever was (a falling pile of 10 000 boxes meets hundreds of thousands), and a step finds
+// that ever was (a long run of a moving pile meets ever more), and a step finds
 // each pair's memory by walking last step's sorted list beside this step's sorted candidates,
 // not by a lookup per pair (a tree's lookups were 5 % of the 1000-box pile's step).
 #pragma once
