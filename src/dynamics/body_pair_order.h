@@ -21,8 +21,10 @@ void orderByBodyPair(std::size_t n, BodyA a, BodyB b, std::vector<std::size_t>& 
   order.resize(n);
   s.by_b.resize(n);
   int top = -1;
-  for (std::size_t i = 0; i < n; ++i) top = std::max({top, a(i), b(i)});
-  for (std::size_t i = 0; i < n; ++i) assert(a(i) >= 0 && b(i) >= 0 && "body indices");
+  for (std::size_t i = 0; i < n; ++i) {
+    assert(a(i) >= 0 && b(i) >= 0 && "body indices");
+    top = std::max({top, a(i), b(i)});
+  }
   const std::size_t buckets = static_cast<std::size_t>(top + 1);
   // One stable pass: `in` (every index once) into `out` by key, equal keys in the order of `in`.
   auto pass = [&](auto key, auto in, std::vector<std::size_t>& out) {

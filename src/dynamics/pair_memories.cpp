@@ -20,13 +20,11 @@ int PairMemories::next(const PiecePair& key) {
 
 void PairMemories::endStep() {
   while (walked_ < live_.size()) release(live_[walked_++].index);
-  live_.swap(next_);
-  next_.clear();
-  walked_ = 0;
+  live_.swap(next_);   // next_ keeps last step's list until beginStep clears it
 }
 
 PairMemory& PairMemories::find(const PiecePair& key) {
-  // Between steps live_ is this step's sorted list (next_ is empty).
+  // Between steps live_ is this step's sorted list.
   auto at = std::lower_bound(live_.begin(), live_.end(), key, [](const Slot& s, const PiecePair& k) { return s.key < k; });
   if (at != live_.end() && at->key == key) return pool_[at->index];
   return aside_[key];
