@@ -72,8 +72,9 @@ double separation(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const
                   const Eigen::Isometry3d& pose_b, SatCache& cache, Eigen::Vector3d& axis);
 
 // The distance (m, 0 when they overlap) between A and B and a closest point of each (world), by
-// GJK (distance.cpp): exact to rounding for separated pieces; for overlapping ones the points
-// mean nothing.
+// GJK (distance.cpp): for separated pieces within rounding of their size (1e-9 m on pieces of
+// metres, which can be far more than the gap of a small face lying a hair above a large one); for
+// overlapping ones the points mean nothing.
 struct PieceDistance {
   double distance = 0;
   Eigen::Vector3d point_a = Eigen::Vector3d::Zero(), point_b = Eigen::Vector3d::Zero();

@@ -108,6 +108,47 @@ TEST_CASE("separation: exact for a face-face gap", "[narrow][separation]") {
         Approx(-0.25).epsilon(1e-12));
 }
 
+// GJK's distance stops at rounding, which on a large face under a nearly parallel small one can
+// be a thousand times the face's gap: a 0.3 m box lying on a 4 m ramp 1.01e-7 m apart came out
+// 1.02e-7 m apart. Taken for a pair closest at a vertex, it got one point, turned about it and
+// sank two corners 1.25 mm into the ramp within a step (the slope jumble, time stepping).
+TEST_CASE("collide: a box lying a hair above a large tilted slab is a face contact with its four corners",
+          "[narrow][separation]") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  const ConvexPiece slab = makeBox(Vector3d(2, 1.5, 0.15));   // half extents: 4 x 3 x 0.3 m
+  const CollisionHull hs = makeCollisionHull(slab);
+  int closest_points = 0, trials = 300;
+  for (int trial = 0; trial < trials; ++trial) {
+    const ConvexPiece box = makeBox(Vector3d(0.025 + 0.15 * unit(rng), 0.025 + 0.15 * unit(rng), 0.025 + 0.15 * unit(rng)));
+    const CollisionHull hb = makeCollisionHull(box);
+    const Eigen::Quaterniond slope = test::rotation(0.5 * u(rng), Vector3d(u(rng), u(rng), 0));
+    const auto xs = pose(Vector3d(u(rng), u(rng), 0.8), slope);
+    // The box's -z face down on the slab's +z face, turned about the normal, tilted by up to
+    // 1e-7 rad, its lowest corner 1e-8 to 5e-7 m above (within the contact tolerance of 1e-6 m).
+    const Eigen::Quaterniond lie = slope * test::rotation(1e-7 * unit(rng), Vector3d(u(rng), u(rng), 0)) *
+                                   test::rotation(3.2 * u(rng), Vector3d::UnitZ());
+    Eigen::Isometry3d xb = pose(xs * Vector3d(1.5 * u(rng), 1.0 * u(rng), 0.5), lie);
+    const Vector3d up = slope * Vector3d::UnitZ();
+    double lowest = INFINITY;
+    for (const Vector3d& v : box.vertices) lowest = std::min(lowest, up.dot(xb * v - xs.translation()) - 0.15);
+    const double gap = 1e-8 + 4.9e-7 * unit(rng);
+    xb.translation() += (gap - lowest) * up;
+    SatCache cache;
+    const auto m = collide(hs, xs, hb, xb, 1e-3, cache);
+    REQUIRE(m);
+    if (m->closest_points) ++closest_points;
+    CHECK(m->points.size() == 4);
+    CHECK(m->normal.dot(up) == Approx(1).margin(1e-9));
+    // Each corner at its own height: the gap, plus at most the tilt times the box's size (1e-7 m).
+    for (const ContactPoint& p : m->points) {
+      CHECK(p.depth <= -gap + 1e-12);
+      CHECK(p.depth >= -gap - 1e-7);
+    }
+  }
+  CHECK(closest_points == 0);
+}
+
 TEST_CASE("collide(A, B) and collide(B, A) agree up to the normal's sign", "[narrow]") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -27,19 +27,12 @@ TEST_CASE("boxes of mixed size, density and restitution dropped onto a slope: no
   CHECK(deepest < 1e-3);
 }
 
-TEST_CASE("boxes of mixed size, density and restitution dropped onto a slope: no fault, time stepping",
+// The deepest overlap is 0.34 mm (2026-11-28), two spinning boxes meeting. It was 1.25 mm at
+// 1.11 s while a light box lying flat on the ramp 1.0e-7 m above it was taken for a pair closest at
+// a vertex (GJK's distance on the large face stopped 1.2e-9 m above the face's gap): held at one
+// point, the box turned two corners into the ramp within a step (narrow_phase.cpp, certifiedGap).
+TEST_CASE("boxes of mixed size, density and restitution dropped onto a slope: no fault, no overlap, time stepping",
           "[hard][slope_jumble][time_stepping]") {
-  CHECK_NOTHROW(deepestOverlap(ContactModel::TimeStepping));
-}
-
-// Known failure: 1.25 mm for one step at 1.11 s (2026-11-27, since the drift projection pushes
-// pairs apart at their points), the next step back under 0.2 mm: a box landing in the heap with a
-// corner the start-of-step contacts did not hold (docs/known-limits.md, the time-stepping model is
-// first order and sees contacts at the start of the step). Each change of the heap's path moves
-// this figure: 1.65 mm before manifolds were kept between steps, 0.45 mm with them; the cause
-// stays.
-TEST_CASE("boxes of mixed size, density and restitution dropped onto a slope: no overlap above 1 mm, time stepping (reached: 1.25 mm)",
-          "[hard][slope_jumble][time_stepping][!shouldfail]") {
   const double deepest = deepestOverlap(ContactModel::TimeStepping);
   INFO("deepest overlap " << deepest << " m");
   CHECK(deepest < 1e-3);
