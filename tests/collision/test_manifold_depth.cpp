@@ -105,7 +105,7 @@ TEST_CASE("manifold depth: random overlapping hulls and boxes agree with the SAT
           "[narrow][depth]") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
-  int checked = 0, apart = 0;
+  int checked = 0, apart = 0, turned = 0;
   double worst = 0;
   for (int pair = 0; pair < 400; ++pair) {
     const ConvexPiece a = randomPiece(rng), b = randomPiece(rng);
@@ -121,7 +121,8 @@ TEST_CASE("manifold depth: random overlapping hulls and boxes agree with the SAT
     for (int step = 0; step < 25; ++step, t += dt, qb = dq * qb) {
       const Eigen::Isometry3d xb = pose(t, qb);
       SatCache fresh;
-      const double sat_depth = -separation(ha, xa, hb, xb, fresh);
+      Vector3d sat_axis;
+      const double sat_depth = -separation(ha, xa, hb, xb, fresh, sat_axis);
       ContactManifold m;
       const bool touching = collide(ha, xa, hb, xb, 0.01, cache, m);
       if (sat_depth <= 0) {  // apart: the SAT value is only a bound on the distance, but a
@@ -135,12 +136,17 @@ TEST_CASE("manifold depth: random overlapping hulls and boxes agree with the SAT
       REQUIRE(touching);
       CHECK(m.points.size() <= 4);
       const double diff = std::abs(deepestDepth(m) - sat_depth);
-      CHECK(diff <= tol);
-      worst = std::max(worst, diff / tol);
+      // A face within 0.8 degrees of the SAT's edge axis may hold the contact instead of the edge
+      // pair's one point (narrow_phase.cpp, nearParallelFaceContact); measured along its normal, the
+      // overlap is then as deep to within 1 - cos 0.8 deg (1e-4) of itself.
+      const bool turned_face = fresh.axis == SatCache::Axis::Edges && std::abs(m.normal.dot(sat_axis)) < 1 - 1e-12;
+      CHECK(diff <= tol + (turned_face ? 1e-4 * sat_depth : 0.0));
+      if (turned_face) ++turned;
+      else worst = std::max(worst, diff / tol);
       ++checked;
     }
   }
-  INFO("worst difference " << worst << " of the tolerance");
+  INFO("worst difference " << worst << " of the tolerance; " << turned << " manifolds on a face turned off the SAT axis");
   CHECK(checked > 2000);
   CHECK(apart > 100);
 }

@@ -149,6 +149,84 @@ TEST_CASE("collide: a box lying a hair above a large tilted slab is a face conta
   CHECK(closest_points == 0);
 }
 
+// Two equal faces turned a little against each other across a small gap (the halves of a cut
+// brick after a blow): the separating axis is an edge pair's, or the direction between the closest
+// points, a few milliradians off the faces' normal. Held at that one corner, the halves turned into
+// each other within a step; the contact is the faces' clipped overlap.
+TEST_CASE("collide: equal faces turned by milliradians across a small gap meet at their whole overlap, not one corner",
+          "[narrow][separation]") {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  int off_face_axis = 0, edge_axis = 0, trials = 300;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Vector3d half(0.05 + 0.15 * unit(rng), 0.05 + 0.15 * unit(rng), 0.05 + 0.3 * unit(rng));
+    const ConvexPiece box = makeBox(half);
+    const CollisionHull h = makeCollisionHull(box);
+    const auto xa = pose(Vector3d::Zero());
+    // B on A's top face, tilted by 1e-3 to 1.2e-2 rad (within the 0.8 degrees of kOppositeFaces)
+    // about an axis in the face, turned by 0.01 to 0.1 rad about the normal and shifted sideways by up
+    // to 1 cm: the two outlines cross, and where B hangs past A's face its corners reach below A's
+    // plane (and A's below B's), so that neither face's own separation is the pair's; inside
+    // the overlap B stands 1e-7 to 5e-5 m above A.
+    const Eigen::Quaterniond turn = test::rotation(1e-3 + 1.1e-2 * unit(rng), Vector3d(u(rng), u(rng), 0)) *
+                                    test::rotation((0.01 + 0.09 * unit(rng)) * (u(rng) < 0 ? -1 : 1), Vector3d::UnitZ());
+    Eigen::Isometry3d xb = pose(Vector3d(0.01 * u(rng), 0.01 * u(rng), 2 * half.z()), turn);
+    const double gap = 1e-7 + 5e-5 * unit(rng);
+    for (int k = 0; k < 4; ++k) {   // the SAT's axis is within milliradians of z: a few corrections
+      SatCache fit;
+      xb.translation().z() += gap - separation(h, xa, h, xb, fit);
+    }
+    SatCache probe;
+    Vector3d axis;
+    const double sat = separation(h, xa, h, xb, probe, axis);
+    if (std::abs(axis.z()) < 1 - 1e-9) ++off_face_axis;   // the SAT's best axis is not the face's
+    if (probe.axis == SatCache::Axis::Edges) ++edge_axis;
+    SatCache cache;
+    const auto m = collide(h, xa, h, xb, 1e-3, cache);
+    REQUIRE(m);
+    CHECK_FALSE(m->closest_points);
+    // The faces' overlap: B's bottom face seen from above, clipped to A's top face; each corner of
+    // it within the margin of A's face (less a share for rounding) must make a point, up to three.
+    const Vector3d down = turn * Vector3d(0, 0, -1);   // B's bottom face: down . p = offset
+    std::vector<Eigen::Vector2d> overlap;
+    double offset = 0;
+    for (const Vector3d& v : box.vertices)
+      if (v.z() < 0) overlap.push_back((xb * v).head<2>()), offset = down.dot(xb * v);
+    const Eigen::Vector2d mid = 0.25 * (overlap[0] + overlap[1] + overlap[2] + overlap[3]);
+    std::sort(overlap.begin(), overlap.end(), [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+      return std::atan2(p.y() - mid.y(), p.x() - mid.x()) < std::atan2(q.y() - mid.y(), q.x() - mid.x());
+    });
+    for (int side = 0; side < 4; ++side) {   // Sutherland-Hodgman against x <= hx, -x <= hx, y <= hy, -y <= hy
+      const Eigen::Vector2d n = side < 2 ? Eigen::Vector2d(side == 0 ? 1 : -1, 0) : Eigen::Vector2d(0, side == 2 ? 1 : -1);
+      const double limit = side < 2 ? half.x() : half.y();
+      std::vector<Eigen::Vector2d> kept;
+      for (std::size_t k = 0; k < overlap.size(); ++k) {
+        const Eigen::Vector2d& p = overlap[k];
+        const Eigen::Vector2d& q = overlap[(k + 1) % overlap.size()];
+        const double dp = n.dot(p) - limit, dq = n.dot(q) - limit;
+        if (dp <= 0) kept.push_back(p);
+        if ((dp < 0) != (dq < 0) && dp != dq) kept.push_back(p + (q - p) * (dp / (dp - dq)));
+      }
+      overlap = kept;
+    }
+    int near = 0;
+    for (const Eigen::Vector2d& p : overlap) {
+      const double z = (offset - down.x() * p.x() - down.y() * p.y()) / down.z();
+      near += z - half.z() < 0.9e-3;
+    }
+    CHECK(m->points.size() >= std::size_t(std::min(near, 3)));
+    CHECK(std::abs(m->normal.z()) > 0.9999);
+    double deepest = -INFINITY;
+    for (const ContactPoint& p : m->points) deepest = std::max(deepest, p.depth);
+    // As deep as the pair is apart, within kParallelSine (1e-6) of the size: the two directions
+    // measure the same gap to that.
+    CHECK(deepest == Approx(-std::max(sat, 0.0)).margin(1e-6 * 0.5));
+  }
+  INFO(off_face_axis << " poses with the best axis off the face normal, " << edge_axis << " an edge pair's");
+  CHECK(off_face_axis > trials / 4);
+  CHECK(edge_axis > trials / 4);
+}
+
 TEST_CASE("collide(A, B) and collide(B, A) agree up to the normal's sign", "[narrow]") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
