@@ -120,7 +120,12 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
     }
     CorrectionCount n;
     shared.timed(Correct, [&] {
-      n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m, shared.extents);
+      // Pair by pair first; what one pass leaves too deep is an island whose pairs push each
+      // other back (a light plate pinched between heavy blocks), projected as a whole.
+      if (pass > 0)
+        n = correction_.correctIslands(world, shared.contacts, settings.contact.tolerance_m, shared.extents,
+                                       settings.contact.max_direct_rows, counters.contacts);
+      if (n.moved == 0) n = correction_.correct(world, shared.contacts, settings.contact.tolerance_m, shared.extents);
     });
     counters.projections += n.moved;
     counters.capped_projections += n.capped;

@@ -7,6 +7,7 @@
 
 #include "dynamics/baraff/energy_payment.h"
 #include "dynamics/contact_islands.h"
+#include "dynamics/island_projection.h"
 #include "dynamics/position_projection.h"
 
 namespace tumble {
@@ -127,6 +128,50 @@ CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact
     used_[a] += moved_a;
     used_[b] += moved_b;
     payForProjection(world, a, b, energy_before, island_of);
+    ++count.moved;
+  }
+  return count;
+}
+
+CorrectionCount DriftCorrection::correctIslands(World& world, const std::vector<Contact>& contacts, double tol,
+                                                const std::vector<BodyExtent>& extents, int max_contacts,
+                                                ContactSolveStats& stats) {
+  touching_.clear();
+  for (const Contact& c : contacts)
+    if (c.depth >= -tol) touching_.push_back(&c);
+  ContactIslands islands;
+  islands.split(world, touching_);
+  CorrectionCount count;
+  for (std::size_t k = 0; k < islands.size(); ++k) {
+    const std::span<const Contact* const> island = islands[k];
+    bool deep = false;
+    for (const Contact* c : island) deep |= c->depth > tol;
+    if (!deep || island.size() > static_cast<std::size_t>(max_contacts)) continue;
+    if (!islandProjection(world, island, tol, moves_, stats) || moves_.empty()) continue;
+    // The reach (as a pair's projection): half each body's thinnest piece over the step.
+    bool within = true;
+    for (const BodyDisplacement& d : moves_) {
+      const double moved = d.dx.norm() + d.dtheta.norm() * extents[d.body].radius;
+      within &= used_[d.body] + moved <= 0.5 * extents[d.body].thinnest;
+    }
+    if (!within) {
+      ++count.capped;
+      continue;
+    }
+    moved_bodies_.clear();
+    double energy_before = 0;
+    for (const BodyDisplacement& d : moves_) {
+      moved_bodies_.push_back(d.body);
+      energy_before += mechanicalEnergy(world, d.body);
+    }
+    double energy_after = 0;
+    for (const BodyDisplacement& d : moves_) {
+      used_[d.body] += d.dx.norm() + d.dtheta.norm() * extents[d.body].radius;
+      displaceBody(world.bodies[d.body], d.dx, d.dtheta);
+      energy_after += mechanicalEnergy(world, d.body);
+    }
+    // A lift out of drift that took no energy is paid for by the island's own kinetic energy.
+    if (energy_after > energy_before) payFrom(world, moved_bodies_, energy_after - energy_before);
     ++count.moved;
   }
   return count;
