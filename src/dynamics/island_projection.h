@@ -44,8 +44,9 @@ struct BodyDisplacement {
   Eigen::Vector3d dtheta = Eigen::Vector3d::Zero();   // rad, world (a rotation vector)
 };
 
-// The displacement (above) of the moving bodies of `island`, touching contacts of one island (each
-// |depth| <= tol or deeper), into `out`, one entry per moving body in order of first appearance.
+// The displacement (above) of the moving bodies of `island`, the contacts of one island, into
+// `out`, one entry per moving body in order of first appearance. Contacts apart (a gap within the
+// detection margin) take part too: their rows push only if the displacement would close the gap.
 // False when the pivoting solve has no usable answer.
 bool islandProjection(const World& world, std::span<const Contact* const> island, double tol,
                       std::vector<BodyDisplacement>& out, ContactSolveStats& stats);

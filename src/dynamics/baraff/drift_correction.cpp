@@ -7,6 +7,7 @@
 
 #include "dynamics/baraff/energy_payment.h"
 #include "dynamics/contact_islands.h"
+#include "dynamics/contact_rows.h"
 #include "dynamics/island_projection.h"
 #include "dynamics/position_projection.h"
 
@@ -134,19 +135,21 @@ CorrectionCount DriftCorrection::correct(World& world, const std::vector<Contact
 }
 
 CorrectionCount DriftCorrection::correctIslands(World& world, const std::vector<Contact>& contacts, double tol,
-                                                const std::vector<BodyExtent>& extents, int max_contacts,
+                                                const std::vector<BodyExtent>& extents, int max_direct_rows,
                                                 ContactSolveStats& stats) {
-  touching_.clear();
-  for (const Contact& c : contacts)
-    if (c.depth >= -tol) touching_.push_back(&c);
+  // Every contact in hand, touching or within the detection margin: a push may close a gap, and
+  // the gaps' rows keep it from driving a body into a neighbour it did not touch (a plate lifted
+  // out of the block it landed in, into the block a millimetre above it).
+  near_.clear();
+  for (const Contact& c : contacts) near_.push_back(&c);
   ContactIslands islands;
-  islands.split(world, touching_);
+  islands.split(world, near_);
   CorrectionCount count;
   for (std::size_t k = 0; k < islands.size(); ++k) {
     const std::span<const Contact* const> island = islands[k];
     bool deep = false;
     for (const Contact* c : island) deep |= c->depth > tol;
-    if (!deep || island.size() > static_cast<std::size_t>(max_contacts)) continue;
+    if (!deep || tooLargeToPivot(island.size(), max_direct_rows)) continue;
     if (!islandProjection(world, island, tol, moves_, stats) || moves_.empty()) continue;
     // The reach (as a pair's projection): half each body's thinnest piece over the step.
     bool within = true;

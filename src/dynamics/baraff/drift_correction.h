@@ -36,16 +36,17 @@ class DriftCorrection {
   // its points together, in the order their first too-deep point appears in `contacts`.
   CorrectionCount correct(World& world, const std::vector<Contact>& contacts, double tolerance_m,
                           const std::vector<BodyExtent>& extents);
-  // Projects each island of touching contacts with a point deeper than `tolerance_m` as a whole
-  // (island_projection.h), where it has at most `max_contacts` touching points; larger islands are
-  // left to `correct`. The same reach and the same payment for a gain as a pair's projection, over
-  // the island's bodies. Counts islands.
+  // Projects each island of `contacts` (touching or within the margin) with a point deeper than
+  // `tolerance_m` as a whole (island_projection.h), where its rows can be pivoted (at most
+  // `max_direct_rows`, three per contact); larger islands are left to `correct`. The same reach
+  // and the same payment for a gain as a pair's projection, over the island's bodies. Counts
+  // islands.
   CorrectionCount correctIslands(World& world, const std::vector<Contact>& contacts, double tolerance_m,
-                                 const std::vector<BodyExtent>& extents, int max_contacts, ContactSolveStats& stats);
+                                 const std::vector<BodyExtent>& extents, int max_direct_rows, ContactSolveStats& stats);
 
  private:
   std::vector<double> used_;    // m: how far this step's corrections have moved each body's points
-  std::vector<const Contact*> touching_;     // correctIslands' buffers
+  std::vector<const Contact*> near_;         // correctIslands' buffers
   std::vector<BodyDisplacement> moves_;
   std::vector<int> moved_bodies_;
 };
