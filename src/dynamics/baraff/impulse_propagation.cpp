@@ -204,14 +204,18 @@ bool anyBounces(const World& world, const std::vector<const Contact*>& island, d
   return false;
 }
 
-// All the island's contacts at once, inelastic: nothing approaching after, no energy added.
+}  // namespace
+
 void plasticImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
                    double min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats) {
   if (tooLargeToPivot(island.size(), s.max_direct_rows)) inelasticIslandImpact(world, island, stats);
   else resolveImpact(world, island, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
 }
 
-}  // namespace
+void plasticIslandImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
+                         double min_bounce_speed, double dt, ContactSolveStats& stats) {
+  plasticImpact(world, island, s, min_bounce_speed, settleRule(s, dt), stats);
+}
 
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
                        const std::vector<const Contact*>& outside, const ContactSettings& s,

@@ -56,6 +56,13 @@ void propagateImpulses(World& world, const std::vector<const Contact*>& island,
                        const std::vector<const Contact*>& outside, const ContactSettings& settings, double min_bounce_speed, double dt,
                        ContactSolveStats& stats);
 
+// All the island's contacts at once, inelastic: nothing approaching after, no energy added.
+void plasticImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
+                   double min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats);
+// The same with the settle rule of a step of `dt`.
+void plasticIslandImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
+                         double min_bounce_speed, double dt, ContactSolveStats& stats);
+
 // One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every
 // normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
 // the impulses; or with `law` Poisson's or Stronge's (restitution_laws.h). e is scaled by
