@@ -68,32 +68,18 @@ TEST_CASE("pile, Baraff: no penetration above 1e-3 m in the first second", "[con
   CHECK(runPile(1).penetration < 1e-3);
 }
 
-// Known failure: at 5 s every piece is inside the bin and no pair overlaps by more than 9.1e-4 m,
-// but the pile still creeps: the fastest piece moves at 0.017 m/s and spins at 0.061 rad/s (at
-// rest would be below the resting-contact speed, 1e-3 m/s). At def6d4b (2026-11-24), about
-// 1.5 minutes of CPU. At 25f2658 (2026-11-23): 0.010 m/s, 0.035 rad/s, 1.05e-3 m deep, 47 pieces
-// faster than 1e-3 m/s. Islands too large to pivot were there solved by Gauss-Seidel on the
-// accelerations from zero at every sub-step, and 7442 of 7545 such solves stopped at the
-// 200-sweep cap with the pieces unbalanced: they sank and slid at millimetres per second. Solved
-// at the velocity level and warm-started (baraff/resting_forces.cpp, solveAtVelocityLevel), they
-// stand the pyramid of 55 up, but on the pile most of these solves (3722 of 4301 at def6d4b) still
-// stop at the cap, and pieces are kicked by impacts passed on through the pile. Tried on 25f2658
-// and not kept: asking approaching normal rows of the acceleration-level solve to stop within the
-// step (39 pieces above 1e-3 m/s), warm-starting that solve (33, 1.5x slower). The time-stepping
-// model rests the same pile to 2e-7 m/s (test_time_stepping.cpp): one velocity-level solve per
-// step, never cut, over contacts within a speculative margin, and its Gauss-Seidel converges.
+// After 5 s every piece rests inside the bin. Hidden ([.]) for their cost, about a minute or two
+// each: build/tests/dynamics/test_contact_scenes '[pile]'. At 065c393 (2026-11-28): the fastest
+// piece at 3.4e-5 m/s and 3.0e-6 rad/s, no pair deeper than 1.0e-6 m at the samples.
 //
-// At bdff5fc (2026-11-24, near contacts in the velocity-level islands): 0.078 m/s, 0.28 rad/s,
-// 9.1e-4 m deep, 70 s. The pile is chaotic: the end speed of one run says little (0.017 at
-// def6d4b). What kicks settled pieces, counted over 3.5-4.2 s (a piece below 2e-3 m/s faster than
-// 5e-3 m/s after one resting solve and integration): 400 kicks, 367 of them in islands solved
-// exactly by pivoting at the acceleration level, of every size (1 to 21 contacts); 24 in the
-// impulse stage. The LCP is exact for the contacts it is given: a piece resting on an edge, its
-// other corners 10 um up (a projection turned it), turns at the acceleration gravity gives and
-// lands again. Near contacts as bounds on the acceleration, a_n >= -2 (gap + v_n dt) / dt^2, were
-// tried and did not stop it (386 kicks). Solving every island at the velocity level stops it
-// (next test), and sleeping freezes what has settled (the test after).
-TEST_CASE("pile, Baraff: after 5 s all 100 pieces rest inside the bin (reached: 0.078 m/s)", "[.][contact][pile][!shouldfail]") {
+// These three were known failures until 2026-11-28, the pile creeping at 0.078 m/s and 0.28 rad/s
+// at 5 s (bdff5fc). Counted over 3.5-4.2 s then, 367 of 400 kicks to settled pieces came from
+// islands solved exactly by pivoting at the acceleration level, a piece resting on an edge with
+// its other corners 10 um up (a pair projection had turned it), and 24 from the impulse stage.
+// Two changes brought it to rest: what one pass of pair projections leaves too deep is projected
+// island by island with friction (island_projection.h), and the collision stage repeats until no
+// touching contact approaches (baraff/collisions.cpp).
+TEST_CASE("pile, Baraff: after 5 s all 100 pieces rest inside the bin", "[.][contact][pile]") {
   PileOutcome out = runPile(5);
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
@@ -101,11 +87,9 @@ TEST_CASE("pile, Baraff: after 5 s all 100 pieces rest inside the bin (reached: 
 }
 
 // The same 5 s with the scene as a user runs it: sleeping on (the scene default; runScene turns it
-// off for the solver tests), so that islands at rest freeze until touched. Known failure (at
-// bdff5fc, 2026-11-24): 0.047 m/s, 0.15 rad/s, 9.1e-4 m deep, 117 s; an island sleeps only when every
-// piece in it is quiet, and the kicks above keep some islands awake (`tumble simulate
-// scenes/pile.json -v`, another run: 72 of 100 asleep at the end, one piece at 9.5e-3 m/s).
-TEST_CASE("pile, Baraff: after 5 s with sleeping all 100 pieces rest inside the bin (reached: 0.047 m/s)", "[.][contact][pile][sleep][!shouldfail]") {
+// off for the solver tests), so that islands at rest freeze until touched. At 065c393: every
+// piece asleep at 5 s, no pair deeper than 1.0e-6 m (0.047 m/s and 72 of 100 asleep at bdff5fc).
+TEST_CASE("pile, Baraff: after 5 s with sleeping all 100 pieces rest inside the bin", "[.][contact][pile][sleep]") {
   PileOutcome out = runPile(5, [](Scene& s) { s.simulation.step.sleep.enabled = true; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);
@@ -113,13 +97,10 @@ TEST_CASE("pile, Baraff: after 5 s with sleeping all 100 pieces rest inside the 
 }
 
 // And with every resting island solved at the velocity level with its near contacts
-// ("pivoting_max_rows": 0; baraff/resting_forces.cpp, solveAtVelocityLevel), sleeping off. Known
-// failure (at bdff5fc, 2026-11-24): 4.4e-3 m/s, 0.022 rad/s, and 8.1e-3 m deep at one of the test's
-// samples, in 14 s instead of 70. With `tumble simulate` (penetration not measured): two pieces
-// at 0.02 m/s at 5 s; a variant that also took near contacts closing by their own speed rested
-// below 5e-5 m/s from 3.5 s; without near contacts, 7 pieces above 1e-3 m/s at 5 s in twice the
-// time.
-TEST_CASE("pile, Baraff: after 5 s with every island at the velocity level all 100 pieces rest inside the bin (reached: 8.1e-3 m deep)", "[.][contact][pile][!shouldfail]") {
+// ("pivoting_max_rows": 0; baraff/resting_forces.cpp, solveAtVelocityLevel), sleeping off; no
+// island is small enough to pivot then, so only the repeated collision stage is new here. At
+// 065c393: 3.7e-9 m/s, 8.6e-9 rad/s, 1.0e-6 m deep (4.4e-3 m/s and 8.1e-3 m deep at bdff5fc).
+TEST_CASE("pile, Baraff: after 5 s with every island at the velocity level all 100 pieces rest inside the bin", "[.][contact][pile]") {
   PileOutcome out = runPile(5, [](Scene& s) { s.simulation.step.contact.max_direct_rows = 0; });
   CHECK(out.speed < 1e-3);
   CHECK(out.spin < 1e-2);

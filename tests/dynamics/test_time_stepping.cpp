@@ -99,8 +99,8 @@ TEST_CASE("time stepping: no cube passes through a 1 cm wall at 100 m/s", "[cont
 
 // The pile (scenes/pile.json) with the time-stepping model comes to rest inside the bin within
 // 5 s. Reached (2026-11-28): every piece below 1.6e-9 m/s and 5.4e-9 rad/s at 5 s; the deepest
-// overlap in the last half second 9.8e-7 m (the Baraff model still creeps at 1e-2 m/s at 5 s:
-// test_pile_scene.cpp says why). Gauss-Seidel stops at its 200 sweeps on a jammed piece, and which
+// overlap in the last half second 9.8e-7 m (the Baraff model rests it too, since 2026-11-28:
+// test_pile_scene.cpp). Gauss-Seidel stops at its 200 sweeps on a jammed piece, and which
 // path jams is chance: on one path a piece resting on an edge, leaning on a third and carrying a
 // fourth crept at 1.2e-3 m/s at 5 s (with 250 sweeps or more it rested).
 TEST_CASE("time stepping: the pile by Gauss-Seidel rests in the bin after 5 s, under 1e-4 m deep", "[contact][time_stepping]") {
