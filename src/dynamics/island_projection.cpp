@@ -1,6 +1,7 @@
 #include "dynamics/island_projection.h"
 
 #include <Eigen/Geometry>
+#include <tuple>
 
 #include "dynamics/contact_rows.h"
 

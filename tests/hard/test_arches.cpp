@@ -99,15 +99,24 @@ TEST_CASE("arch of 25 voussoirs, Baraff: stands 20 s, no overlap above 1 mm, no 
   checkArch(standArch("hard/arch25", 20, ContactModel::Baraff));
 }
 
-// The Baraff model on 101 stones, on a 0.3 s horizon: about 50 s of wall time per simulated second
-// (twenty sub-steps per step, each cut by back-stepping to a joint that lands again), so the
-// suite runs it past the settling only. Within it the ring holds: centre motion 1.3 mm after
-// 0.1 s, overlaps of 0.03 mm (2026-11-25); before, it fell 0.18 m in 0.3 s with overlaps of 8.7 mm
-// (the drift correction ran once, on the contacts of the sub-step's start after a back-step, so a
-// stone pushed out of one neighbour stayed in the other: baraff/baraff_model.cpp). Past it the
-// criterion's 20 s is still a known failure (docs/known-limits.md): run for 3 s by `tumble
-// simulate`, the ring sags 36 mm by 1 s and 86 mm by 2 s, the energy-gain check trips on 13 steps
-// from 0.89 s, and it takes 92 s of wall time per simulated second.
+// The Baraff model on 101 stones, on a 0.3 s horizon, past the settling. Within it the ring
+// holds: centre motion 1.3 mm after 0.1 s, overlaps of 0.03 mm (2026-11-25); before, it fell
+// 0.18 m in 0.3 s with overlaps of 8.7 mm (the drift correction ran once, on the contacts of the
+// sub-step's start after a back-step, so a stone pushed out of one neighbour stayed in the other:
+// baraff/baraff_model.cpp).
 TEST_CASE("arch of 101 voussoirs, Baraff: stands, no overlap above 1 mm, no fault (0.3 s horizon)", "[hard][arch]") {
   checkArch(standArch("hard/arch101", 0.3, ContactModel::Baraff));
+}
+
+// Known failure over the criterion's 20 s (2026-11-28): the ring stands, no centre moving more than
+// 0.81 mm after 0.1 s, overlaps of 0.038 mm, at about 1 s of wall time per simulated second (0.85 s
+// by `tumble simulate --no-sleep`, 1.2 s here with every step's exact overlaps), but from 5.69 s the energy-gain check trips on 1432 of the 2000
+// steps, the total 311 J above the lowest it reached where the check allows 311 J: the drift
+// correction lifting stones out of sub-millimetre settling, as with time stepping. Earlier that
+// day it sagged 36 mm by 1 s and 86 mm by 2 s, at 92 s of wall time per simulated second: what
+// one pass of pair projections left too deep in a joint is now projected island by island
+// (island_projection.h), and the collision stage repeats until no touching contact approaches.
+TEST_CASE("arch of 101 voussoirs, Baraff: stands 20 s, no overlap above 1 mm, no fault (reached: energy-gain faults on 1432 of 2000 steps)",
+          "[hard][arch][!shouldfail]") {
+  checkArch(standArch("hard/arch101", 20, ContactModel::Baraff));
 }
