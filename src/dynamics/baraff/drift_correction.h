@@ -4,6 +4,9 @@
 // (position_projection.h). Only positions move, so no speed is added (unlike a Baumgarte term,
 // which pushes bodies apart with speed); and where a projection raises the pair's energy (a lift
 // out of drift that took none), the gain is paid from the pair's kinetic energy (the .cpp).
+// What one pass of pairs leaves too deep is projected island by island (correctIslands,
+// island_projection.h): pair by pair, a light body pinched between heavy ones takes nearly all
+// of every push, and the passes trade its overlap back and forth.
 //
 // Its reach is bounded: within one step the corrections may move a body's points by no more, in
 // all, than the deepest overlap the fault check lets pass (half its thinnest piece; fault_check.h).
