@@ -1,6 +1,5 @@
 #include "dynamics/island_projection.h"
 
-#include <Eigen/Geometry>
 #include <tuple>
 
 #include "dynamics/contact_rows.h"
@@ -39,12 +38,6 @@ bool islandProjection(const World& world, std::span<const Contact* const> island
     }
   }
   return true;
-}
-
-void displaceBody(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta) {
-  body.x += dx;
-  const double angle = dtheta.norm();
-  if (angle > 0) body.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, dtheta / angle)) * body.q).normalized();
 }
 
 }  // namespace tumble

@@ -45,13 +45,11 @@ struct BodyDisplacement {
 };
 
 // The displacement (above) of the moving bodies of `island`, the contacts of one island, into
-// `out`, one entry per moving body in order of first appearance. Contacts apart (a gap within the
+// `out`, one entry per moving body in order of first appearance (applied by displaceBody,
+// position_projection.h). Contacts apart (a gap within the
 // detection margin) take part too: their rows push only if the displacement would close the gap.
 // False when the pivoting solve has no usable answer.
 bool islandProjection(const World& world, std::span<const Contact* const> island, double tol,
                       std::vector<BodyDisplacement>& out, ContactSolveStats& stats);
-
-// Moves and turns a body by a small displacement: x += dx, q = exp(dtheta) q.
-void displaceBody(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta);
 
 }  // namespace tumble

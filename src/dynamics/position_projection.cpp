@@ -1,5 +1,6 @@
 #include "dynamics/position_projection.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <cmath>
 #include <optional>
@@ -8,13 +9,6 @@
 
 namespace tumble {
 namespace {
-
-// Turns and moves a body by a small displacement: x += dx, q = exp(dtheta) q.
-void displace(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta) {
-  body.x += dx;
-  const double angle = dtheta.norm();
-  if (angle > 0) body.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, dtheta / angle)) * body.q).normalized();
-}
 
 // Moves the pair straight out along the deepest point's normal, in inverse proportion to mass,
 // until that point is tol/2 deep; never turns them.
@@ -106,9 +100,15 @@ bool projectPair(World& world, const std::vector<const Contact*>& points, double
     pushOut(A, B, *deepest, tol);
     return true;
   }
-  if (!A.is_static) displace(A, move->dx_a, move->dtheta_a);
-  if (!B.is_static) displace(B, move->dx_b, move->dtheta_b);
+  if (!A.is_static) displaceBody(A, move->dx_a, move->dtheta_a);
+  if (!B.is_static) displaceBody(B, move->dx_b, move->dtheta_b);
   return true;
+}
+
+void displaceBody(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta) {
+  body.x += dx;
+  const double angle = dtheta.norm();
+  if (angle > 0) body.q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, dtheta / angle)) * body.q).normalized();
 }
 
 }  // namespace tumble

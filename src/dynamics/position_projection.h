@@ -23,6 +23,7 @@
 // case; the pile overlapped by 3.5 mm).
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "dynamics/body_extent.h"
@@ -36,5 +37,8 @@ namespace tumble {
 // cannot move (both static).
 bool projectPair(World& world, const std::vector<const Contact*>& points, double tol,
                  const std::vector<BodyExtent>& extents);
+
+// Moves and turns a body by a small displacement: x += dx, q = exp(dtheta) q.
+void displaceBody(RigidBody& body, const Eigen::Vector3d& dx, const Eigen::Vector3d& dtheta);
 
 }  // namespace tumble

@@ -7,6 +7,7 @@
 
 #include "dynamics/contact_detection.h"
 #include "dynamics/island_projection.h"
+#include "dynamics/position_projection.h"
 #include "scene/scene_loader.h"
 #include "scene/world_builder.h"
 

@@ -36,6 +36,7 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
   // deep within the sub-step, since back-stepping takes a touching pair that is not lifting off for
   // one at rest. After kCollisionRounds, the islands still colliding take one inelastic impact.
   std::vector<const Contact*> set, outside;
+  std::vector<char> colliding(contacts.size());   // per contact, this round
   bool hit = false;
   for (int round = 0; round <= kCollisionRounds; ++round) {
     set.clear();
@@ -43,6 +44,7 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
     bool any = false;
     for (const Contact& c : contacts) {
       ContactClass k = classify(world, c, s);
+      colliding[static_cast<std::size_t>(&c - contacts.data())] = k == ContactClass::Colliding;
       if (k == ContactClass::Separating) {
         outside.push_back(&c);   // may yet close on a body an impact sets moving (neighbour_turn_back.h)
         continue;
@@ -54,9 +56,10 @@ bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const
     if (!any) break;
     hit = true;
     for (const std::vector<const Contact*>& island : splitIntoIslands(world, set)) {
-      bool colliding = false;
-      for (const Contact* c : island) colliding |= classify(world, *c, s) == ContactClass::Colliding;
-      if (!colliding) continue;
+      // Islands share no moving body: what the others' impulses did leaves this one's classes.
+      bool any_colliding = false;
+      for (const Contact* c : island) any_colliding |= colliding[static_cast<std::size_t>(c - contacts.data())] != 0;
+      if (!any_colliding) continue;
       if (round < kCollisionRounds) propagateImpulses(world, island, outside, s, min_bounce_speed, dt, stats);
       else plasticIslandImpact(world, island, s, min_bounce_speed, dt, stats);
     }

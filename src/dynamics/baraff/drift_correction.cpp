@@ -142,7 +142,7 @@ CorrectionCount DriftCorrection::correctIslands(World& world, const std::vector<
   // out of the block it landed in, into the block a millimetre above it).
   near_.clear();
   for (const Contact& c : contacts) near_.push_back(&c);
-  ContactIslands islands;
+  ContactIslands& islands = islands_;
   islands.split(world, near_);
   CorrectionCount count;
   for (std::size_t k = 0; k < islands.size(); ++k) {

@@ -20,6 +20,7 @@
 
 #include "dynamics/body_extent.h"
 #include "dynamics/contact.h"
+#include "dynamics/contact_islands.h"
 #include "dynamics/contact_solve_common.h"
 #include "dynamics/island_projection.h"
 #include "dynamics/world.h"
@@ -50,6 +51,7 @@ class DriftCorrection {
  private:
   std::vector<double> used_;    // m: how far this step's corrections have moved each body's points
   std::vector<const Contact*> near_;         // correctIslands' buffers
+  ContactIslands islands_;
   std::vector<BodyDisplacement> moves_;
   std::vector<int> moved_bodies_;
 };
