@@ -23,7 +23,8 @@
 // friction it holds, as the same squeeze holds it in the dynamics; without (mu = 0) it slides.
 // The displacement is then M^-1 J^T p over the normal and the friction rows.
 //
-// The Baraff model's drift correction uses it from its second pass on (baraff/drift_correction.h).
+// The Baraff model's drift correction uses it from its second pass on (baraff/drift_correction.h),
+// by pivoting where the island is small enough and by sweeps where it is not.
 #pragma once
 
 #include <span>
@@ -51,5 +52,14 @@ struct BodyDisplacement {
 // False when the pivoting solve has no usable answer.
 bool islandProjection(const World& world, std::span<const Contact* const> island, double tol,
                       std::vector<BodyDisplacement>& out, ContactSolveStats& stats);
+
+// The same problem for an island too large to pivot (tooLargeToPivot), by projected Gauss-Seidel
+// sweeps from no push with the impulse solve's subspace rounds (island_impulses.h). Pair by pair,
+// the projection cannot open a closed chain: the 101-stone arch, its joints 3 um deep between two
+// feet on the ground, took eight passes of pair pushes every step without lowering its deepest
+// point, each pass lifting the ring a little (360 J in 6 s). Where the sweeps stop unconverged
+// the push is part of the way, and the next pass goes on from there.
+bool islandProjectionBySweeps(const World& world, std::span<const Contact* const> island, double tol,
+                              std::vector<BodyDisplacement>& out, ContactSolveStats& stats);
 
 }  // namespace tumble

@@ -149,8 +149,11 @@ CorrectionCount DriftCorrection::correctIslands(World& world, const std::vector<
     const std::span<const Contact* const> island = islands[k];
     bool deep = false;
     for (const Contact* c : island) deep |= c->depth > tol;
-    if (!deep || tooLargeToPivot(island.size(), max_direct_rows)) continue;
-    if (!islandProjection(world, island, tol, moves_, stats) || moves_.empty()) continue;
+    if (!deep) continue;
+    const bool solved = tooLargeToPivot(island.size(), max_direct_rows)
+                            ? islandProjectionBySweeps(world, island, tol, moves_, stats)
+                            : islandProjection(world, island, tol, moves_, stats);
+    if (!solved || moves_.empty()) continue;
     // The reach (as a pair's projection): half each body's thinnest piece over the step.
     bool within = true;
     for (const BodyDisplacement& d : moves_) {

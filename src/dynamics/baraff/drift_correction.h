@@ -41,10 +41,9 @@ class DriftCorrection {
   CorrectionCount correct(World& world, const std::vector<Contact>& contacts, double tolerance_m,
                           const std::vector<BodyExtent>& extents);
   // Projects each island of `contacts` (touching or within the margin) with a point deeper than
-  // `tolerance_m` as a whole (island_projection.h), where its rows can be pivoted (at most
-  // `max_direct_rows`, three per contact); larger islands are left to `correct`. The same reach
-  // and the same payment for a gain as a pair's projection, over the island's bodies. Counts
-  // islands.
+  // `tolerance_m` as a whole (island_projection.h): by pivoting where its rows can be pivoted (at
+  // most `max_direct_rows`, three per contact), by sweeps where not. The same reach and the same
+  // payment for a gain as a pair's projection, over the island's bodies. Counts islands.
   CorrectionCount correctIslands(World& world, const std::vector<Contact>& contacts, double tolerance_m,
                                  const std::vector<BodyExtent>& extents, int max_direct_rows, ContactSolveStats& stats);
 
