@@ -184,6 +184,12 @@ inline constexpr int kActiveSetMinSweeps = 100;
 // Conjugate-gradient iterations per subspace step: about the length of the longest chain of bodies
 // a load runs through (the 101-stone arch's half ring is 50).
 inline constexpr int kActiveSetIterations = 100;
+// Baraff model, a resting island too large to pivot and at rest: its velocity-level Gauss-Seidel
+// may sweep up to this share of the square of its body count (at least the usual 200).
+// Gauss-Seidel passes a change along a chain of N bodies by about one body a sweep and converges
+// by about 1 - c / N^2 a sweep, so a long chain under load (the 101-stone arch) needs of the order
+// of N^2 sweeps once; warm started from that answer, it then takes a few a step.
+inline constexpr double kRestingChainSweeps = 0.5;
 
 }  // namespace tuning
 }  // namespace tumble
