@@ -57,8 +57,9 @@ bool islandProjectionBySweeps(const World& world, std::span<const Contact* const
   buildContactRows(world, island, rows);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows.rows.size()));
   for (std::size_t k = 0; k < island.size(); ++k) b[rows.normal_row[k]] = 0.5 * tol - island[k]->depth;
-  // From no push: what the sweeps reach before their cap pushes no point past tol/2 and lowers
-  // the merit, so it is a part of the way, never a push the exact answer would not make.
+  // From no push. Stopped at their cap the sweeps are part of the way: on a long chain a pass can
+  // leave a joint deeper than it found it (a push passed along only partly), and the next pass,
+  // on the contacts this one leaves, goes on from there.
   Eigen::VectorXd p = Eigen::VectorXd::Zero(b.size());
   solveIslandImpulsesInPlace(world, rows, island, b, p, IslandImpulseSettings{}, stats);
   if (!p.allFinite()) return false;

@@ -286,8 +286,8 @@ int restingChainSweeps(const RestingContext& ctx, const std::vector<const Contac
   bodies.clear();
   const double slow = ctx.settings.resting_speed_m_s;
   for (const Contact* c : island) {
-    const double vn = normalVelocity(ctx.world, *c);
-    if (vn * vn + tangentialVelocity(ctx.world, *c).squaredNorm() > slow * slow) return 0;
+    const Eigen::Vector3d v = pointVelocity(ctx.world.bodies[c->b], c->point) - pointVelocity(ctx.world.bodies[c->a], c->point);
+    if (v.squaredNorm() > slow * slow) return 0;
     for (int k : {c->a, c->b})
       if (!ctx.world.bodies[k].is_static) bodies.push_back(k);
   }
