@@ -4,8 +4,8 @@
 // PGS converges slowly from zero on stacks).
 //
 // A point is kept in body A's frame, so it follows A as it moves; two points of the same pair of
-// bodies within `radius` of each other across the contact normal are the same contact. Lookup is by binary search over the
-// records sorted by body pair, then nearest point: deterministic.
+// bodies within `radius` of each other across the contact normal are the same contact. Lookup is
+// among body A's records (sorted by body pair), then by nearest point: deterministic.
 #pragma once
 
 #include <Eigen/Core>
@@ -42,6 +42,7 @@ class ImpulseMemory {
  private:
   std::vector<ImpulseRecord> records_;   // sorted by (a, b), stable within a pair
   std::vector<ImpulseRecord> spare_;     // the records before, their storage reused
+  std::vector<std::size_t> first_of_a_;  // per body: its first record as A; one past the last body
   std::vector<std::size_t> order_;
 };
 

@@ -177,6 +177,43 @@ TEST_CASE("impulse memory: a contact is found again across its normal, not beyon
   CHECK(memory.find(world, other, 1) == nullptr);
 }
 
+TEST_CASE("impulse memory: each contact finds its own pair's record among many pairs", "[contact][time_stepping]") {
+  // Records of several pairs, given out of order; every lookup must land in its own pair, and a
+  // pair (or a body A) with no record finds none.
+  World world;
+  world.bodies.resize(8);
+  const std::vector<std::pair<int, int>> pairs = {{2, 5}, {0, 1}, {4, 6}, {0, 2}, {2, 3}, {1, 2}};
+  std::vector<ImpulseRecord> records;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    ImpulseRecord rec;
+    rec.a = pairs[k].first;
+    rec.b = pairs[k].second;
+    rec.local = Eigen::Vector3d::Zero();
+    rec.impulse = {static_cast<double>(k), 0, 0};
+    records.push_back(rec);
+  }
+  ImpulseMemory memory;
+  memory.replace(records);
+  Contact c;
+  c.normal = Eigen::Vector3d::UnitZ();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    c.a = pairs[k].first;
+    c.b = pairs[k].second;
+    const ImpulseRecord* found = memory.find(world, c, 1e-3);
+    REQUIRE(found != nullptr);
+    CHECK(found->impulse.x() == static_cast<double>(k));
+  }
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 3}, {1, 0}, {3, 4}, {2, 4}, {4, 7}, {6, 7}, {7, 1}}) {
+    c.a = a;
+    c.b = b;
+    CHECK(memory.find(world, c, 1e-3) == nullptr);
+  }
+  memory.replace({});
+  c.a = 0;
+  c.b = 1;
+  CHECK(memory.find(world, c, 1e-3) == nullptr);
+}
+
 
 TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short of touching past one step",
           "[contact][time_stepping]") {
