@@ -20,12 +20,22 @@ std::vector<BodyExtent> extentsOf(const World& world) {
   return out;
 }
 
-void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach) {
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach,
+               const std::vector<Eigen::Vector3d>* spin) {
   reach.assign(world.bodies.size(), 0.0);
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const RigidBody& b = world.bodies[i];
     if (b.is_static) continue;
-    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + b.angularVelocity().norm() * body_radius[i]) * dt;
+    const double turning = spin ? (*spin)[i].norm() : b.angularVelocity().norm();
+    reach[i] = (b.velocity().norm() + world.gravity.norm() * dt + turning * body_radius[i]) * dt;
+  }
+}
+
+void bodySpins(const World& world, std::vector<Eigen::Vector3d>& spin) {
+  spin.resize(world.bodies.size());
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    const RigidBody& b = world.bodies[i];
+    spin[i] = b.is_static ? Eigen::Vector3d::Zero() : b.angularVelocity();
   }
 }
 

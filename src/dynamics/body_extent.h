@@ -22,6 +22,12 @@ std::vector<BodyExtent> extentsOf(const World& world);
 // margin the detector adds for it, so that every pair that can touch during the step is a contact
 // at its start (the time-stepping and penalty models): (|v| + |g| dt + |w| r) dt, with r the
 // body's radius about its centre of mass.
-void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach);
+// `spin` (if given) holds each body's angular velocity (bodySpins), read instead of worked out.
+void bodyReach(const World& world, const std::vector<double>& body_radius, double dt, std::vector<double>& reach,
+               const std::vector<Eigen::Vector3d>* spin = nullptr);
+
+// Each body's angular velocity (zero for a static body), once: a step reads it per contact and per
+// pair, and each reading is a rotation matrix and two products (2 % of a pile's step).
+void bodySpins(const World& world, std::vector<Eigen::Vector3d>& spin);
 
 }  // namespace tumble

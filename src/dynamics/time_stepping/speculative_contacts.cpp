@@ -57,8 +57,8 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
 }
 
 long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
-                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance,
-                      int threads) {
+                      std::vector<PiecePair>& pairs, const std::vector<Eigen::Vector3d>& spin, double dt, bool gravity,
+                      double margin, double tolerance, int threads) {
   const std::size_t found = contacts.size();
   // Each pair of pieces once, and only pairs turning fast enough to matter; then each pair's swept
   // contacts on the threads, appended in the pairs' order. The lists are kept between steps (per
@@ -72,10 +72,8 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
   for (std::size_t i = 0; i < found; ++i) {
     const PiecePair pair = pairs[i];
     if (pair.piece_b < 0 || (i > 0 && pairs[i - 1] == pair)) continue;
-    const RigidBody& a = world.bodies[contacts[i].a];
-    const RigidBody& b = world.bodies[contacts[i].b];
-    const double spin_a = a.is_static ? 0.0 : a.angularVelocity().norm();
-    const double spin_b = b.is_static ? 0.0 : b.angularVelocity().norm();
+    const double spin_a = spin[static_cast<std::size_t>(contacts[i].a)].norm();
+    const double spin_b = spin[static_cast<std::size_t>(contacts[i].b)].norm();
     if ((spin_a * detector.hull(pair.piece_a).radius + spin_b * detector.hull(pair.piece_b).radius) * dt <= margin)
       continue;
     firsts.push_back(i);

@@ -38,9 +38,10 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
 // collided where its free motion ends the step; a point found there deeper than `tolerance`, apart
 // at the start by more than it and not near a contact the pair has, becomes a speculative contact
 // of its own (carried back to the start, along the normal found at the end). Returns how many.
+// `spin`: each body's angular velocity now (bodySpins).
 // The pairs are collided on `threads` threads; what is added, and its order, does not depend on it.
 long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
-                      std::vector<PiecePair>& pairs, double dt, bool gravity, double margin, double tolerance,
-                      int threads = 1);
+                      std::vector<PiecePair>& pairs, const std::vector<Eigen::Vector3d>& spin, double dt, bool gravity,
+                      double margin, double tolerance, int threads = 1);
 
 }  // namespace tumble

@@ -15,12 +15,13 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   const double dt = settings.dt;
   if (shared.has_contacts) {
     auto detect = [&] {
-      bodyReach(world, shared.body_radius, dt, reach_);
+      bodySpins(world, spin_);
+      bodyReach(world, shared.body_radius, dt, reach_, &spin_);
       shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_,
                              settings.contact.reuse_manifolds, settings.threads);
       keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
                             settings.contact.tolerance_m);
-      addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
+      addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, spin_, dt, shared.apply_gravity,
                        settings.contact.margin_m, settings.contact.tolerance_m, settings.threads);
     };
     shared.timed(Detect, detect);
@@ -30,8 +31,19 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
     });
   }
   // Approach speeds before gravity's impulse: the speed an impact reverses.
+  // The projection has turned bodies: their spins are read again.
+  bodySpins(world, spin_);
+  auto pointVelocity = [&](int k, const Eigen::Vector3d& arm) -> Eigen::Vector3d {
+    const RigidBody& body = world.bodies[k];
+    if (body.is_static) return Eigen::Vector3d::Zero();
+    return body.velocity() + spin_[k].cross((body.x + arm) - body.x);   // as rowVelocity reads it
+  };
   approach_.resize(shared.contacts.size());
-  for (std::size_t i = 0; i < shared.contacts.size(); ++i) approach_[i] = -normalVelocity(world, shared.contacts[i]);
+  for (std::size_t i = 0; i < shared.contacts.size(); ++i) {
+    const Contact& c = shared.contacts[i];
+    const Eigen::Vector3d arm_a = c.point - world.bodies[c.a].x, arm_b = c.point - world.bodies[c.b].x;
+    approach_[i] = -c.normal.dot(pointVelocity(c.b, arm_b) - pointVelocity(c.a, arm_a));
+  }
   shared.timed(Forces, [&] {
     if (shared.apply_gravity) applyGravityImpulse(world, dt);
   });

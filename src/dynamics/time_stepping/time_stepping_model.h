@@ -31,6 +31,7 @@ class TimeSteppingModel final : public ContactModelStep {
   double last_dt_ = 0;             // s: the last step's length (refined steps are shorter)
   DriftProjection projection_;
   std::vector<double> reach_;      // how far each body can travel in the step
+  std::vector<Eigen::Vector3d> spin_;   // each body's angular velocity (body_extent.h, bodySpins)
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
   std::string joints_line_;        // for `tumble check`; empty without joints
 };
