@@ -110,11 +110,17 @@ void closestOnTetrahedron(Simplex& s) {
 
 PieceDistance distance(const HullView& a, const HullView& b) {
   auto support = [&](const Eigen::Vector3d& d) {   // the point of A - B farthest along -d
+    // Each vertex's height along d once (the same comparisons as recomputing the best's).
     int ia = 0, ib = 0;
-    for (int i = 1; i < a.vertexCount(); ++i)
-      if (a.vertices[i].dot(d) < a.vertices[ia].dot(d)) ia = i;
-    for (int j = 1; j < b.vertexCount(); ++j)
-      if (b.vertices[j].dot(d) > b.vertices[ib].dot(d)) ib = j;
+    double lowest_a = a.vertices[0].dot(d), highest_b = b.vertices[0].dot(d);
+    for (int i = 1; i < a.vertexCount(); ++i) {
+      const double h = a.vertices[i].dot(d);
+      if (h < lowest_a) ia = i, lowest_a = h;
+    }
+    for (int j = 1; j < b.vertexCount(); ++j) {
+      const double h = b.vertices[j].dot(d);
+      if (h > highest_b) ib = j, highest_b = h;
+    }
     return SimplexPoint{a.vertices[ia] - b.vertices[ib], a.vertices[ia], b.vertices[ib]};
   };
   Eigen::Vector3d v = a.centroid - b.centroid;

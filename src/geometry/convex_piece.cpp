@@ -45,8 +45,11 @@ Eigen::Vector3d ConvexPiece::support(const Eigen::Vector3d& d) const {
 
 Eigen::Vector3d ConvexPiece::supportAt(const Eigen::Vector3d* v, std::size_t count, const Eigen::Vector3d& d) const {
   std::size_t best = 0;
-  for (std::size_t i = 1; i < count; ++i)
-    if (v[i].dot(d) > v[best].dot(d)) best = i;
+  double highest = v[0].dot(d);   // each vertex's height along d once
+  for (std::size_t i = 1; i < count; ++i) {
+    const double h = v[i].dot(d);
+    if (h > highest) best = i, highest = h;
+  }
   if (rounded()) return v[best] + radius_m * d.normalized();
   if (!revolved()) return v[best];
   // The disc at an end of the axis reaches farthest along d at its rim point in d's direction
