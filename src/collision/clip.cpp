@@ -12,8 +12,10 @@ namespace {
 // The vertex of `piece` deepest along -n (the first of equal ones: deterministic).
 int deepestVertex(const HullView& piece, const Eigen::Vector3d& n) {
   int best = 0;
+  double lowest = n.dot(piece.vertices[0]);   // each vertex's height once
   for (int v = 1; v < piece.vertexCount(); ++v) {
-    if (n.dot(piece.vertices[v]) < n.dot(piece.vertices[best])) best = v;
+    const double h = n.dot(piece.vertices[v]);
+    if (h < lowest) best = v, lowest = h;
   }
   return best;
 }
@@ -150,13 +152,14 @@ namespace {
 // `clear`: the piece's support feature along n is then the edge between them. -1 when it is not.
 std::pair<int, int> supportEdge(const HullView& piece, const Eigen::Vector3d& n, double clear) {
   int first = -1, second = -1;
+  double h_first = 0, h_second = 0;   // their heights, each vertex's taken once
   for (int v = 0; v < piece.vertexCount(); ++v) {
     const double h = n.dot(piece.vertices[v]);
-    if (first < 0 || h > n.dot(piece.vertices[first])) second = first, first = v;
-    else if (second < 0 || h > n.dot(piece.vertices[second])) second = v;
+    if (first < 0 || h > h_first) second = first, h_second = h_first, first = v, h_first = h;
+    else if (second < 0 || h > h_second) second = v, h_second = h;
   }
   if (second < 0) return {-1, -1};
-  const double low = n.dot(piece.vertices[second]);
+  const double low = h_second;
   for (int v = 0; v < piece.vertexCount(); ++v)
     if (v != first && v != second && n.dot(piece.vertices[v]) > low - clear) return {-1, -1};
   return {std::min(first, second), std::max(first, second)};

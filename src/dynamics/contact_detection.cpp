@@ -61,19 +61,21 @@ void ContactDetector::addPairContacts(const World& world, const PiecePair& pair,
   int b = pair.piece_b >= 0 ? pieces_[pair.piece_b].body : ~pair.piece_b;
   const RigidBody& A = world.bodies[a];
   const RigidBody& B = world.bodies[b];
+  if (m.points.empty()) return;
+  // What the manifold's points share (its pair's material, its normal's rolling radii), once.
+  Contact c;
+  c.a = a;
+  c.b = b;
+  c.normal = m.normal;
+  c.restitution = combineRestitution(A.restitution, B.restitution);
+  c.friction = combineFriction(A.friction, B.friction);
+  c.closest_points = m.closest_points;
+  c.radius_a = pieces_[pair.piece_a].shape->rollingRadius(A.q.conjugate() * m.normal);
+  c.radius_b = pair.piece_b >= 0 ? pieces_[pair.piece_b].shape->rollingRadius(B.q.conjugate() * m.normal) : 0.0;
   for (const ContactPoint& p : m.points) {
-    Contact c;
-    c.a = a;
-    c.b = b;
     c.point = p.position;
-    c.normal = m.normal;
     c.depth = p.depth;
-    c.restitution = combineRestitution(A.restitution, B.restitution);
-    c.friction = combineFriction(A.friction, B.friction);
     if (c.friction > 0) ++work_.frictional_contacts;
-    c.closest_points = m.closest_points;
-    c.radius_a = pieces_[pair.piece_a].shape->rollingRadius(A.q.conjugate() * m.normal);
-    c.radius_b = pair.piece_b >= 0 ? pieces_[pair.piece_b].shape->rollingRadius(B.q.conjugate() * m.normal) : 0.0;
     out.push_back(c);
     if (pairs) pairs->push_back(pair);
   }
