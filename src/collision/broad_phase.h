@@ -52,11 +52,14 @@ class SweepAndPrune {
 
   void chooseAxis();
   void refreshAndSort();
+  void sortPairs(std::vector<ProxyPair>& pairs);   // by (a, b)
 
   std::vector<BroadPhaseProxy> proxies_;
   std::vector<Entry> order_;  // sorted by (min, proxy)
   int axis_ = -1;
   std::int64_t swaps_ = 0;
+  std::vector<ProxyPair> by_b_;       // sortPairs' buffers, kept between steps
+  std::vector<std::size_t> starts_;
 };
 
 // The O(n^2) oracle the tests hold SweepAndPrune to: same filters, same order.
