@@ -81,6 +81,36 @@ double cachedSeparation(const PairView& p, const SatCache& c) {
   return s;
 }
 
+// The cached face axis's separation for two boxes, from only what faceSeparation reads of them (the
+// face's normal and plane, the other box's three axes and centre), taken exactly as through the
+// pair's view (makePairView: A's frame, B moved into it), so the same bits, without moving B's
+// eight corners and six planes first: over half of a pile's pairs stop here, on the axis that
+// separated them the step before.
+std::optional<double> cachedBoxFaceSeparation(const CollisionHull& a, const Eigen::Isometry3d& pose_a,
+                                              const CollisionHull& b, const Eigen::Isometry3d& pose_b,
+                                              const SatCache& c) {
+  if (!a.box || !b.box || a.piece->vertices.size() < b.piece->vertices.size()) return std::nullopt;
+  if (c.axis != Axis::FaceA && c.axis != Axis::FaceB) return std::nullopt;
+  const Eigen::Isometry3d rel = pose_a.inverse(Eigen::Isometry) * pose_b;
+  const Eigen::Matrix3d R = rel.linear();
+  const Eigen::Vector3d t = rel.translation();
+  double radius = 0;
+  if (c.axis == Axis::FaceA) {
+    const Eigen::Vector3d n = a.piece->face_normals[static_cast<std::size_t>(c.index_a)];
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d axis = R * b.piece->face_normals[static_cast<std::size_t>(b.box->plus_face[k])];
+      radius += b.box->half[k] * std::abs(n.dot(axis));
+    }
+    const Eigen::Vector3d centre = R * b.centroid + t;
+    return n.dot(centre) - radius - a.face_offsets[static_cast<std::size_t>(c.index_a)];
+  }
+  const Eigen::Vector3d n = R * b.piece->face_normals[static_cast<std::size_t>(c.index_b)];
+  const double offset = b.face_offsets[static_cast<std::size_t>(c.index_b)] + n.dot(t);
+  for (int k = 0; k < 3; ++k)
+    radius += a.box->half[k] * std::abs(n.dot(a.piece->face_normals[static_cast<std::size_t>(a.box->plus_face[k])]));
+  return n.dot(a.centroid) - radius - offset;
+}
+
 // A face counts as the larger of two when its area is larger by more than this share.
 constexpr double kLargerFace = 1e-6;
 
@@ -361,6 +391,11 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
              ContactManifold& out) {
   out.points.clear();
   out.closest_points = false;
+  if (const std::optional<double> sep = cachedBoxFaceSeparation(a, pose_a, b, pose_b, cache); sep && *sep > margin_m) {
+    cache.last_use = SatCache::Use::EarlyExit;
+    ++cache.early_exits;
+    return false;
+  }
   const PairView p = makePairView(a, pose_a, b, pose_b);
   if (isRevolved(p)) {   // a cylinder or a cone: its support mapping (support_contact.cpp)
     cache.last_use = SatCache::Use::Miss;
