@@ -26,12 +26,23 @@ AxisQuery queryBoxEdges(const HullView& a, const BoxShape& box_a, const HullView
       Eigen::Vector3d n = axis_a[i].cross(axis_b[j]);
       const double len2 = n.squaredNorm();
       if (!(len2 > kParallelSine * kParallelSine)) continue;   // parallel (or NaN), as in sat.cpp
-      n /= std::sqrt(len2);
+      const auto [b1, b2] = otherAxes(j);
+      // An axis that is certainly worse than the best so far is not normalised (three divisions):
+      // its separation times |n|, from the unnormalised axis, is below the best's times |n| by
+      // far more than the roundings that tell the two apart (a few units in the last place of
+      // the terms' sizes), so the exact one could be neither better nor equal.
+      const double len = std::sqrt(len2);
+      if (best.separation > -INFINITY) {
+        const double along = std::abs(n.dot(between));
+        const double reach = box_a.half[a1] * std::abs(n.dot(axis_a[a1])) + box_a.half[a2] * std::abs(n.dot(axis_a[a2])) +
+                             box_b.half[b1] * std::abs(n.dot(axis_b[b1])) + box_b.half[b2] * std::abs(n.dot(axis_b[b2]));
+        if (along - reach + 1e-9 * (along + reach) < best.separation * len) continue;
+      }
+      n /= len;
       if (n.dot(between) < 0) n = -n;
       // The support corners. An axis lying in a face plane of either box (a component of zero)
       // meets that face's edges at their ends, where the Gauss-map test is strict: the face axes
       // give that separation, so the axis is left to them, as there.
-      const auto [b1, b2] = otherAxes(j);
       const double ca1 = n.dot(axis_a[a1]), ca2 = n.dot(axis_a[a2]);
       const double cb1 = -n.dot(axis_b[b1]), cb2 = -n.dot(axis_b[b2]);
       if (ca1 == 0 || ca2 == 0 || cb1 == 0 || cb2 == 0) continue;
