@@ -91,7 +91,11 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
           double stiff = r.turning;
           if (!(stiff > 0)) continue;
           double& total = pushed_[order[k]];
-          double lambda = std::max(-total, (depthNow(c) - 0.5 * tol) / stiff);
+          const double excess = depthNow(c) - 0.5 * tol;
+          // Not deeper than half the tolerance and not pushed yet in this pass: nothing to do (the
+          // push below would be zero), and no division to wait for.
+          if (total == 0 && !(excess > 0)) continue;
+          double lambda = std::max(-total, excess / stiff);
           if (lambda == 0 || (total == 0 && lambda < 0)) continue;
           // Drift turns a body by far less than kProjectionMaxTurn; a push that would turn it
           // more is an overlap a violent step left, and is made by translation (see the header).
