@@ -7,6 +7,10 @@
 
 namespace tumble {
 
+namespace {
+constexpr std::size_t kPrefetchAhead = 4;   // jobs
+}  // namespace
+
 Eigen::Isometry3d poseOf(const RigidBody& body) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = body.rotation();
@@ -142,7 +146,16 @@ void ContactDetector::detect(const World& world, const ContactSettings& settings
       job.ground_kept = slack > 0 ? &ground_kept_[g * pieces_.size() + i] : nullptr;
     }
   }
-  parallelFor(threads, count, [&](std::size_t k) { runJob(world, jobs_[k], slack); });
+  parallelFor(threads, count, [&](std::size_t k) {
+    // A pair's memory lies wherever the pool had room when the pair was first met: fetching it a
+    // few jobs ahead hides the cache miss the narrow phase otherwise waits on at its first read
+    // (a third of collide's own time in the 1000-box pile). Only a hint: nothing read changes.
+    if (k + kPrefetchAhead < pair_jobs) {
+      const char* ahead = reinterpret_cast<const char*>(jobs_[k + kPrefetchAhead].memory);
+      for (std::size_t line = 0; line < sizeof(PairMemory); line += 64) __builtin_prefetch(ahead + line);
+    }
+    runJob(world, jobs_[k], slack);
+  });
   for (std::size_t k = 0; k < count; ++k) {
     const PairJob& job = jobs_[k];
     if (job.keep) ++(job.reused ? work_.manifolds_reused : work_.manifolds_built);
