@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/pair_order.h"
 #include "collision/aabb.h"
 
 namespace tumble {
@@ -58,8 +59,9 @@ class SweepAndPrune {
   std::vector<Entry> order_;  // sorted by (min, proxy)
   int axis_ = -1;
   std::int64_t swaps_ = 0;
-  std::vector<ProxyPair> by_b_;       // sortPairs' buffers, kept between steps
-  std::vector<std::size_t> starts_;
+  std::vector<ProxyPair> sorted_;            // sortPairs' buffers, kept between steps
+  std::vector<std::size_t> order_of_pairs_;
+  PairOrderScratch pair_order_;
 };
 
 // The O(n^2) oracle the tests hold SweepAndPrune to: same filters, same order.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "dynamics/body_pair_order.h"
+#include "base/pair_order.h"
 
 namespace tumble {
 namespace {
@@ -67,8 +67,8 @@ void groupByBodyPair(const std::vector<Contact>& contacts, BodyPairGroups& out) 
   const std::size_t m = contacts.size();
   out.groups.clear();
   auto pairOf = [&](std::size_t i) { return std::make_pair(contacts[i].a, contacts[i].b); };
-  thread_local BodyPairOrderScratch scratch;
-  orderByBodyPair(m, [&](std::size_t i) { return contacts[i].a; }, [&](std::size_t i) { return contacts[i].b; },
+  thread_local PairOrderScratch scratch;
+  orderByPair(m, [&](std::size_t i) { return contacts[i].a; }, [&](std::size_t i) { return contacts[i].b; },
                   out.order, scratch);
   for (std::size_t k = 0; k < m;) {
     std::size_t end = k;

@@ -42,7 +42,12 @@ Eigen::Matrix3d inverseInertiaWorld(const RigidBody& body) {
 
 Eigen::Vector3d pointVelocity(const RigidBody& body, const Eigen::Vector3d& p) {
   if (body.is_static) return Eigen::Vector3d::Zero();
-  return body.velocity() + body.angularVelocity().cross(p - body.x);
+  return pointVelocity(body, body.angularVelocity(), p);
+}
+
+Eigen::Vector3d pointVelocity(const RigidBody& body, const Eigen::Vector3d& spin, const Eigen::Vector3d& p) {
+  if (body.is_static) return Eigen::Vector3d::Zero();
+  return body.velocity() + spin.cross(p - body.x);
 }
 
 double rowVelocity(const World& world, const ContactRow& row) {

@@ -35,6 +35,8 @@ void tangentsOf(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& 
 Eigen::Matrix3d inverseInertiaWorld(const RigidBody& body);
 // Velocity of the material point of `body` at world point p.
 Eigen::Vector3d pointVelocity(const RigidBody& body, const Eigen::Vector3d& p);
+// The same with the body's angular velocity given (body_extent.h, bodySpins).
+Eigen::Vector3d pointVelocity(const RigidBody& body, const Eigen::Vector3d& spin, const Eigen::Vector3d& p);
 // J_row v: relative velocity of B with respect to A along the row's direction.
 double rowVelocity(const World& world, const ContactRow& row);
 

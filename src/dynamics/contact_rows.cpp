@@ -163,4 +163,11 @@ double normalVelocity(const World& world, const Contact& c) {
   return rowVelocity(world, rowAlong(world, c, c.normal));
 }
 
+double normalVelocity(const World& world, const Contact& c, const std::vector<Eigen::Vector3d>& spin) {
+  const ContactRow row = rowAlong(world, c, c.normal);
+  const RigidBody& A = world.bodies[row.a];
+  const RigidBody& B = world.bodies[row.b];
+  return row.dir.dot(pointVelocity(B, spin[row.b], B.x + row.rb) - pointVelocity(A, spin[row.a], A.x + row.ra));
+}
+
 }  // namespace tumble

@@ -94,5 +94,7 @@ inline bool tooLargeToPivot(std::size_t contacts, int max_direct_rows) {
 
 // Relative normal velocity of a contact (m/s, < 0 approaching).
 double normalVelocity(const World& world, const Contact& c);
+// The same with each body's angular velocity given (body_extent.h, bodySpins).
+double normalVelocity(const World& world, const Contact& c, const std::vector<Eigen::Vector3d>& spin);
 
 }  // namespace tumble

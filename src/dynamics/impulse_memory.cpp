@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "dynamics/body_pair_order.h"
+#include "base/pair_order.h"
 
 namespace tumble {
 Eigen::Vector3d ImpulseMemory::localPoint(const World& world, const Contact& c) {
@@ -38,8 +38,8 @@ const ImpulseRecord* ImpulseMemory::find(const World& world, const Contact& c, d
 
 void ImpulseMemory::replace(const std::vector<ImpulseRecord>& records) {
   // Sorted by pair, stable within a pair.
-  thread_local BodyPairOrderScratch scratch;
-  orderByBodyPair(records.size(), [&](std::size_t i) { return records[i].a; }, [&](std::size_t i) { return records[i].b; },
+  thread_local PairOrderScratch scratch;
+  orderByPair(records.size(), [&](std::size_t i) { return records[i].a; }, [&](std::size_t i) { return records[i].b; },
                   order_, scratch);
   spare_.resize(records.size());
   for (std::size_t k = 0; k < order_.size(); ++k) spare_[k] = records[order_[k]];

@@ -1,4 +1,4 @@
-// Indices ordered by their pair of bodies (body_pair_order.h): the order a comparison sort on
+// Indices ordered by their pair of bodies (base/pair_order.h): the order a comparison sort on
 // (a, b, index) gives, for random pairs with many repeats and bodies of every index.
 #include <catch2/catch.hpp>
 
@@ -8,13 +8,13 @@
 #include <utility>
 #include <vector>
 
-#include "dynamics/body_pair_order.h"
+#include "base/pair_order.h"
 
 using namespace tumble;
 
 TEST_CASE("body pair order: sorted by (a, b), stable within a pair", "[body_pair_order]") {
   std::mt19937 rng(5);
-  BodyPairOrderScratch scratch;
+  PairOrderScratch scratch;
   std::vector<std::size_t> order;
   for (int trial = 0; trial < 200; ++trial) {
     const int bodies = 1 + trial % 37;
@@ -25,7 +25,7 @@ TEST_CASE("body pair order: sorted by (a, b), stable within a pair", "[body_pair
     std::iota(expected.begin(), expected.end(), std::size_t{0});
     std::sort(expected.begin(), expected.end(),
               [&](std::size_t x, std::size_t y) { return std::make_pair(pairs[x], x) < std::make_pair(pairs[y], y); });
-    orderByBodyPair(pairs.size(), [&](std::size_t i) { return pairs[i].first; },
+    orderByPair(pairs.size(), [&](std::size_t i) { return pairs[i].first; },
                     [&](std::size_t i) { return pairs[i].second; }, order, scratch);
     REQUIRE(order == expected);
   }

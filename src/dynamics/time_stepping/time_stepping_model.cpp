@@ -33,17 +33,8 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   // Approach speeds before gravity's impulse: the speed an impact reverses.
   // The projection has turned bodies: their spins are read again.
   bodySpins(world, spin_);
-  auto pointVelocity = [&](int k, const Eigen::Vector3d& arm) -> Eigen::Vector3d {
-    const RigidBody& body = world.bodies[k];
-    if (body.is_static) return Eigen::Vector3d::Zero();
-    return body.velocity() + spin_[k].cross((body.x + arm) - body.x);   // as rowVelocity reads it
-  };
   approach_.resize(shared.contacts.size());
-  for (std::size_t i = 0; i < shared.contacts.size(); ++i) {
-    const Contact& c = shared.contacts[i];
-    const Eigen::Vector3d arm_a = c.point - world.bodies[c.a].x, arm_b = c.point - world.bodies[c.b].x;
-    approach_[i] = -c.normal.dot(pointVelocity(c.b, arm_b) - pointVelocity(c.a, arm_a));
-  }
+  for (std::size_t i = 0; i < shared.contacts.size(); ++i) approach_[i] = -normalVelocity(world, shared.contacts[i], spin_);
   shared.timed(Forces, [&] {
     if (shared.apply_gravity) applyGravityImpulse(world, dt);
   });
