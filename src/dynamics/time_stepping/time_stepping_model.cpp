@@ -13,23 +13,10 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   last_dt_ = settings.dt;
   ++shared.counters.substeps;
   const double dt = settings.dt;
-  if (shared.has_contacts) {
-    auto detect = [&] {
-      bodySpins(world, spin_);
-      bodyReach(world, shared.body_radius, dt, reach_, &spin_);
-      shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_,
-                             settings.contact.reuse_manifolds, settings.threads);
-      keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
-                            settings.contact.tolerance_m);
-      addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, spin_, dt, shared.apply_gravity,
-                       settings.contact.margin_m, settings.contact.tolerance_m, settings.threads);
-    };
-    shared.timed(Detect, detect);
-    shared.wakeTouched(world, detect);
-    shared.timed(Correct, [&] {
-      shared.counters.projections += projection_.project(world, shared.contacts, settings.contact.tolerance_m);
-    });
-  }
+  // The contacts the last step ended with, already corrected, unless the state has changed since
+  // (bodies put to sleep, a step taken back, a first step) or this step is of another length.
+  if (shared.has_contacts && !(shared.contacts_fresh && end_state_.matches(world) && detected_dt_ == dt))
+    detectAndCorrect(world, settings, shared);
   // Approach speeds before gravity's impulse: the speed an impact reverses.
   // The projection has turned bodies: their spins are read again.
   bodySpins(world, spin_);
@@ -49,12 +36,40 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   if (!world.joints.empty() && !shared.has_contacts) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });
   for (Wrench& w : shared.wrenches) w = Wrench{};
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, settings, false); });
+  // Post-stabilisation: the state the step ends in, which frames, checks and the next step see,
+  // is detected and corrected now (see the header).
+  if (shared.has_contacts) {
+    detectAndCorrect(world, settings, shared);
+    end_state_.save(world);
+    detected_dt_ = dt;
+    shared.contacts_fresh = true;
+  }
   // Free motion with joints still follows them (their forces at every integrator stage hold the
   // centripetal pull); what drift is left is projected out, positions only (joint_projection.h).
+  // Last, so that a joint ends the step closed; a move leaves the contacts in hand stale.
   if (!world.joints.empty())
     shared.timed(Correct, [&] {
       if (projectJointPositions(world).passes > 0) shared.contacts_fresh = false;
     });
+}
+
+void TimeSteppingModel::detectAndCorrect(World& world, const StepSettings& settings, SharedStages& shared) {
+  const double dt = settings.dt;
+  auto detect = [&] {
+    bodySpins(world, spin_);
+    bodyReach(world, shared.body_radius, dt, reach_, &spin_);
+    shared.detector.detect(world, settings.contact, shared.contacts, &shared.pairs, &reach_,
+                           settings.contact.reuse_manifolds, settings.threads);
+    keepReachableContacts(world, shared.detector, shared.contacts, shared.pairs, dt, shared.apply_gravity,
+                          settings.contact.tolerance_m);
+    addSweptContacts(world, shared.detector, shared.contacts, shared.pairs, spin_, dt, shared.apply_gravity,
+                     settings.contact.margin_m, settings.contact.tolerance_m, settings.threads);
+  };
+  shared.timed(Detect, detect);
+  shared.wakeTouched(world, detect);
+  shared.timed(Correct, [&] {
+    shared.counters.projections += projection_.project(world, shared.contacts, settings.contact.tolerance_m);
+  });
 }
 
 void TimeSteppingModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
@@ -67,11 +82,6 @@ void TimeSteppingModel::start(const World& world, const StepSettings& /*settings
 
 std::vector<std::string> TimeSteppingModel::describe(const StepSettings& settings, const SharedStages& shared) const {
   std::vector<std::string> lines;
-  if (shared.has_contacts) {
-    lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space, "
-                    "within a speculative margin (how far bodies can close in a step)");
-    lines.push_back("correct     position projection of residual penetration");
-  }
   if (shared.apply_gravity) lines.push_back("forces      gravity impulse on " + shared.movingBodies());
   if (shared.has_contacts)
     lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
@@ -81,6 +91,12 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
                                        : "every island by Gauss-Seidel alone"));
   if (!joints_line_.empty()) lines.push_back(joints_line_);
   lines.push_back(shared.integrateLine(settings) + " (free motion with the new momenta)");
+  if (shared.has_contacts) {
+    lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space, "
+                    "within a speculative margin (how far bodies can close in a step); at the end of "
+                    "each step, for the state it ends in and the next step");
+    lines.push_back("correct     position projection of residual penetration, at the end of each step");
+  }
   if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
   return lines;
 }

@@ -1,18 +1,33 @@
 // The time-stepping contact model (Moreau 1988; Stewart and Trinkle 1996): one velocity-level
 // impulse problem per step, never cut. Symplectic Euler in the momenta. A step:
 //
-//   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
-//   correct     project out residual penetration                          drift_projection.h
 //   forces      gravity as an impulse                                     gravity.h
 //   resting     the contact impulses (restitution, friction pyramid),     contact_impulses.h
 //               with a world's joints in the same problem                 joints/contact_joint_lcp.h
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
+//   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
+//   correct     project out residual penetration                          drift_projection.h
 //   joints      their position drift projected out                         joints/joint_projection.h
+//
+// The step's contacts are the ones the last step ended with; the first step, and one after
+// anything changed the bodies between steps (sleep, a step taken back) or of another length,
+// detects and corrects first.
+//
+// Why detect and correct at the end (post-stabilisation: M. B. Cline and D. K. Pai,
+// "Post-stabilization for rigid body simulation with contact and constraints", 2003): the state a
+// step ends in is the one frames, trajectories, the fault check and sleeping see, and the rows
+// hold contacts to first order only. Two halves of a brick struck by a steel ball slide along
+// each other at 8 m/s turning at 70 rad/s: their shared face turns by 0.07 rad within a 1 ms
+// step, and the slide closes it by about |w| |v_t| dt^2: corrected only at the start of the
+// next step, the overlap at a step's end reached 1.4 mm, and stayed above 1 mm for 4 steps. Corrected at the end, the same sequence of
+// stages (detect, correct, solve, integrate, detect, ...) leaves no state deeper than the
+// projection's result: the same work, one detection more per run.
 #pragma once
 
 #include <vector>
 
+#include "dynamics/body_snapshot.h"
 #include "dynamics/contact_model.h"
 #include "dynamics/time_stepping/contact_impulses.h"
 #include "dynamics/time_stepping/drift_projection.h"
@@ -27,6 +42,9 @@ class TimeSteppingModel final : public ContactModelStep {
   StepImpulses lastImpulses() const override { return {&impulses_.memory(), last_dt_}; }
 
  private:
+  // Detection (with waking the sleepers it finds touched) and the drift projection.
+  void detectAndCorrect(World& world, const StepSettings& settings, SharedStages& shared);
+
   ContactImpulses impulses_;
   double last_dt_ = 0;             // s: the last step's length (refined steps are shorter)
   DriftProjection projection_;
@@ -34,6 +52,8 @@ class TimeSteppingModel final : public ContactModelStep {
   std::vector<Eigen::Vector3d> spin_;   // each body's angular velocity (body_extent.h, bodySpins)
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
   std::string joints_line_;        // for `tumble check`; empty without joints
+  BodySnapshot end_state_;         // the state the last step ended in, its contacts detected
+  double detected_dt_ = 0;         // s: the step length those contacts were detected for
 };
 
 }  // namespace tumble
