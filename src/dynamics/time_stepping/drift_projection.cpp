@@ -64,21 +64,17 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   last_push_.assign(bodies, -1);
   found_shallow_.assign(grouped.groups.size(), std::numeric_limits<long>::min());
   long pushes = 0;
-  // The deepest point the last pass met (before pushing it): points it did not meet are no
-  // deeper than the tolerance.
-  double deepest_met = INFINITY;
   for (int pass = 0; pass < tuning::kProjectionMaxPasses; ++pass) {
-    if (pass >= tuning::kProjectionPasses && !(deepest_met > tuning::kProjectionDeepFactor * tol)) break;
-    deepest_met = 0;
+    // Past the first passes, only pairs with a point far deeper than the tolerance are pushed (a
+    // landing), until none is left: a pass that moves nothing ends the projection.
+    const double deep_from = pass < tuning::kProjectionPasses ? tol : tuning::kProjectionDeepFactor * tol;
     bool moved_any = false;
     for (std::size_t g = 0; g < grouped.groups.size(); ++g) {
       const auto [begin, end] = grouped.groups[g];
       const Contact& named = contacts[order[begin]];
       if (std::max(last_push_[named.a], last_push_[named.b]) <= found_shallow_[g]) continue;
-      double deepest_here = -INFINITY;
-      for (std::size_t k = begin; k < end; ++k) deepest_here = std::max(deepest_here, depthNow(contacts[order[k]]));
-      const bool deep = deepest_here > tol;
-      deepest_met = std::max(deepest_met, deepest_here);
+      bool deep = false;
+      for (std::size_t k = begin; k < end && !deep; ++k) deep = depthNow(contacts[order[k]]) > deep_from;
       if (!deep) {
         found_shallow_[g] = pushed_so_far;
         continue;

@@ -1,6 +1,6 @@
 // Drift projection for the time-stepping model: positions only, pair by pair, repeated in passes
-// (tuning::kProjectionPasses, more up to kProjectionMaxPasses while a pass still meets a point far
-// deeper than the tolerance: a landing), each pass reading the depths the earlier pushes left (a contact's
+// (tuning::kProjectionPasses, then up to kProjectionMaxPasses over the pairs still far deeper than
+// the tolerance: a landing), each pass reading the depths the earlier pushes left (a contact's
 // depth changes by the relative displacement of its two material points along its normal). One
 // pass, as the Baraff model makes after every sub-step, cannot keep up under a load: in a column
 // of boxes each push down into the box below is undone by the push up from it, and in the
