@@ -14,7 +14,8 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   ++shared.counters.substeps;
   const double dt = settings.dt;
   // The contacts the last step ended with, already corrected, unless the state has changed since
-  // (bodies put to sleep, a step taken back, a first step) or this step is of another length.
+  // (bodies put to sleep, a step taken back, a joint's projection, a first step) or this step is of
+  // another length.
   if (shared.has_contacts && !(shared.contacts_fresh && end_state_.matches(world) && detected_dt_ == dt))
     detectAndCorrect(world, settings, shared);
   // Approach speeds before gravity's impulse: the speed an impact reverses.
