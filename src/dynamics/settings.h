@@ -189,7 +189,8 @@ inline constexpr int kSmallIslandSweeps = 30;
 inline constexpr int kActiveSetRounds = 4;
 inline constexpr int kActiveSetSweeps = 20;
 // A time-stepping sweep cap below this is a speed setting (a pile by ten sweeps, as Bullet and
-// ODE's quickstep solve it) that takes an unconverged answer by choice: no subspace rounds.
+// ODE's quickstep solve it) that takes an unconverged answer by choice: no subspace rounds, and a
+// drift projection of the deep points only (drift_projection.h).
 inline constexpr int kActiveSetMinSweeps = 100;
 // Conjugate-gradient iterations per subspace step: about the length of the longest chain of bodies
 // a load runs through (the 101-stone arch's half ring is 50).
@@ -202,4 +203,9 @@ inline constexpr int kActiveSetIterations = 100;
 inline constexpr double kRestingChainSweeps = 0.5;
 
 }  // namespace tuning
+
+// A time-stepping speed setting (tuning::kActiveSetMinSweeps): the crowd setting of the automatic
+// model (auto/auto_model.h) and the benchmark's fastest.
+inline bool isSpeedSetting(const StepSettings& s) { return s.time_stepping_sweeps < tuning::kActiveSetMinSweeps; }
+
 }  // namespace tumble

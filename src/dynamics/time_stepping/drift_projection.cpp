@@ -11,7 +11,7 @@
 
 namespace tumble {
 
-long DriftProjection::project(World& world, std::vector<Contact>& contacts, double tol) {
+long DriftProjection::project(World& world, std::vector<Contact>& contacts, double tol, bool deep_only) {
   groupByBodyPair(contacts, grouped_);
   const BodyPairGroups& grouped = grouped_;
   const std::vector<std::size_t>& order = grouped.order;
@@ -65,9 +65,11 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   found_shallow_.assign(grouped.groups.size(), std::numeric_limits<long>::min());
   long pushes = 0;
   for (int pass = 0; pass < tuning::kProjectionMaxPasses; ++pass) {
-    // Past the first passes, only pairs with a point far deeper than the tolerance are pushed (a
-    // landing), until none is left: a pass that moves nothing ends the projection.
-    const double deep_from = pass < tuning::kProjectionPasses ? tol : tuning::kProjectionDeepFactor * tol;
+    // Past the first passes (from the first, for a speed setting), only pairs with a point far
+    // deeper than the tolerance are pushed (a landing), until none is left: a pass that moves
+    // nothing ends the projection.
+    const bool shallow_too = pass < tuning::kProjectionPasses && !deep_only;
+    const double deep_from = shallow_too ? tol : tuning::kProjectionDeepFactor * tol;
     bool moved_any = false;
     for (std::size_t g = 0; g < grouped.groups.size(); ++g) {
       const auto [begin, end] = grouped.groups[g];

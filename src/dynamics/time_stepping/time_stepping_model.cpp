@@ -69,7 +69,8 @@ void TimeSteppingModel::detectAndCorrect(World& world, const StepSettings& setti
   shared.timed(Detect, detect);
   shared.wakeTouched(world, detect);
   shared.timed(Correct, [&] {
-    shared.counters.projections += projection_.project(world, shared.contacts, settings.contact.tolerance_m);
+    shared.counters.projections +=
+        projection_.project(world, shared.contacts, settings.contact.tolerance_m, isSpeedSetting(settings));
   });
 }
 
@@ -96,7 +97,11 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
     lines.push_back("detect      sweep and prune over piece AABBs, SAT narrow phase, ground half-space, "
                     "within a speculative margin (how far bodies can close in a step); at the end of "
                     "each step, for the state it ends in and the next step");
-    lines.push_back("correct     position projection of residual penetration, at the end of each step");
+    lines.push_back(isSpeedSetting(settings)
+                        ? "correct     position projection of penetration deeper than " +
+                              std::to_string(static_cast<int>(tuning::kProjectionDeepFactor)) +
+                              " times the contact tolerance (a speed setting), at the end of each step"
+                        : "correct     position projection of residual penetration, at the end of each step");
   }
   if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
   return lines;
