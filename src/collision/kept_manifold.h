@@ -14,14 +14,21 @@
 //   - between two pieces, a face resting on a face: three or four points, each at a vertex of one
 //     piece, the normal a face normal of one piece and the other piece's face turned against it
 //     within the narrow phase's face-on-face angle;
+//   - between two pieces, one or two vertices of one piece on a face of the other (a box resting
+//     on an edge or a corner), the normal that face's, every other vertex of the first piece
+//     farther than the margin above the face's plane: the other piece lies wholly under that
+//     plane, so nothing else of the pair was within the margin, unreported, when it was built
+//     (about a third of the narrow phases of the 1000-box pile's time-stepping run were such
+//     pairs; keeping them took the run 4 % less time, 2026-11-28);
 //   - a pair found apart, kept as "nothing within the margin".
 // What is not kept, with what it cost when it was: a point clipped at the border of the other
 // piece's face (a box overhanging the one below) stays at the material point of its edge, whose
 // depth drifts by the drift times the tilt (6e-6 m in a settling pile, against a contact tolerance
-// of 1e-6 m); one or two points (an edge on a face, crossing edges, the closest points of pieces
-// apart) stand for one pair of features, and a piece rocking about them brings in another that was
-// within the margin but unreported (a hull turning about the vertex it touched: 1.4e-5 m deep on
-// its far side); a face meeting the other piece at an angle is where the narrow phase's own choice
+// of 1e-6 m); one or two points that are not such vertices (an edge clipped by a face's border,
+// crossing edges, the closest points of pieces apart), or vertices with another vertex of their
+// piece within the margin above the face, stand for one pair of features, and a piece rocking
+// about them brings in another that was within the margin but unreported (a hull turning about
+// the vertex it touched: 1.4e-5 m deep on its far side); a face meeting the other piece at an angle is where the narrow phase's own choice
 // turns as the pieces settle (a tent's ridge, found as one card's thin edge face on the other
 // card's face, became the bisector of the two cards a few steps later, and the tent, held along
 // the stale normal, fell).

@@ -145,3 +145,117 @@ TEST_CASE("kept manifold: a box overhanging the edge of the one below, its footp
                top_shape, 1e-3, kept);
   CHECK(kept.valid);
 }
+
+// A box resting on one of its edges on a box's face (tilted 0.3 rad): the manifold is that edge's
+// two corners, and every other corner stands far above the face, so nothing else of the pair is
+// within the margin and drift within the slack brings nothing within it: kept, and each reused
+// depth is the corner's distance to the face plane, the narrow phase's own.
+TEST_CASE("kept manifold: a box resting on an edge on a box's face is kept, its reused depths the narrow phase's",
+          "[kept_manifold]") {
+  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
+  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
+  const CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
+  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const double tilt = 0.3, lift = 0.25 * (std::cos(tilt) + std::sin(tilt));
+  const Eigen::Isometry3d built_at = pose({0.1, -0.05, 0.5 + lift - 2e-7}, rotation(tilt, Vector3d::UnitX()));
+  const double margin = 1e-3, slack = 1e-4;
+  SatCache cache;
+  ContactManifold m;
+  REQUIRE(collide(base, pose_a, top, built_at, margin, cache, m));
+  REQUIRE(m.points.size() == 2);
+  KeptManifold kept;
+  keepManifold(m, true, pose_a, built_at, pose_a.inverse(Eigen::Isometry) * built_at, ReferenceIs::A, &base_shape,
+               top_shape, margin, kept);
+  REQUIRE(kept.valid);
+
+  const Eigen::Isometry3d moved = pose({0.1 + 3e-5, -0.05 + 2e-5, 0.5 + lift - 6e-7},
+                                       rotation(tilt, Vector3d::UnitX()) * rotation(5e-5, Vector3d(0, 1, 0)));
+  const double drift = keptDrift(kept, pose_a.inverse(Eigen::Isometry) * moved, top.radius);
+  CHECK(drift <= slack);
+  ContactManifold reused, fresh;
+  REQUIRE(reuseManifold(kept, pose_a, moved, ReferenceIs::A, margin, reused));
+  SatCache fresh_cache;
+  REQUIRE(collide(base, pose_a, top, moved, margin, fresh_cache, fresh));
+  REQUIRE(reused.points.size() == fresh.points.size());
+  CHECK((reused.normal - fresh.normal).norm() < 1e-12);
+  for (const ContactPoint& p : reused.points) {
+    const ContactPoint* q = withFeature(fresh, p.feature);
+    REQUIRE(q != nullptr);
+    CHECK(std::abs(p.depth - q->depth) < 1e-12);
+  }
+}
+
+// Were the narrow phase to report only the edge a box rests on while its other bottom edge stands
+// within the margin above the face (tilted 4e-4 rad: 0.2 mm up, inside the 1 mm margin), a box
+// rocked back by a tenth of a milliradian would touch there, where a kept manifold would not
+// look: such a manifold is not kept. The narrow phase reports this footprint face on face (four
+// points), but a piece of another shape may report one feature with another within the margin.
+TEST_CASE("kept manifold: an edge on a face with another corner within the margin above the face is not kept",
+          "[kept_manifold]") {
+  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
+  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
+  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  // The manifold of the corners within 1e-6 m of the face plane (z = 0.5), as the narrow phase
+  // writes one: normal from the base (A) to the box (B), midpoints, depths, a feature id each.
+  auto edgeManifold = [&](const Eigen::Isometry3d& at) {
+    ContactManifold m;
+    m.normal = Vector3d::UnitZ();
+    std::uint32_t feature = 0;
+    for (const Vector3d& v : top_shape.vertices) {
+      const Vector3d w = at * v;
+      if (w.z() > 0.5 + 1e-6) continue;
+      ContactPoint p;
+      p.depth = 0.5 - w.z();
+      p.position = Vector3d(w.x(), w.y(), 0.5 * (0.5 + w.z()));
+      p.feature = ++feature;
+      m.points.push_back(p);
+    }
+    return m;
+  };
+  auto keptAt = [&](double tilt) {
+    const double lift = 0.25 * (std::cos(tilt) + std::sin(tilt));
+    const Eigen::Isometry3d at = pose({0.1, -0.05, 0.5 + lift - 2e-7}, rotation(tilt, Vector3d::UnitX()));
+    const ContactManifold m = edgeManifold(at);
+    REQUIRE(m.points.size() == 2);
+    KeptManifold kept;
+    keepManifold(m, true, pose_a, at, pose_a.inverse(Eigen::Isometry) * at, ReferenceIs::A, &base_shape, top_shape,
+                 1e-3, kept);
+    return kept.valid;
+  };
+  CHECK(keptAt(0.3));          // the other bottom edge 0.15 m up
+  CHECK(keptAt(3.9e-3));       // 1.95 mm up: beyond the margin
+  CHECK_FALSE(keptAt(1.5e-3)); // 0.75 mm up
+  CHECK_FALSE(keptAt(4e-4));   // 0.2 mm up
+}
+
+// A box standing on one corner (tilted 0.3 rad about two axes) on a box's face: the narrow phase
+// reports the corner alone, the rest stands centimetres above: kept, its reused depth exact.
+TEST_CASE("kept manifold: a box on a corner on a box's face is kept, its reused depth the narrow phase's",
+          "[kept_manifold]") {
+  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
+  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
+  const CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
+  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const Eigen::Quaterniond corner = rotation(0.3, Vector3d::UnitX()) * rotation(0.3, Vector3d::UnitY());
+  double lowest = 0;
+  for (const Vector3d& v : top_shape.vertices) lowest = std::min(lowest, (corner * v).z());
+  const Eigen::Isometry3d at = pose({0.1, -0.05, 0.5 - lowest - 2e-7}, corner);
+  SatCache cache;
+  ContactManifold m;
+  REQUIRE(collide(base, pose_a, top, at, 1e-3, cache, m));
+  REQUIRE(m.points.size() == 1);
+  KeptManifold kept;
+  keepManifold(m, true, pose_a, at, pose_a.inverse(Eigen::Isometry) * at, ReferenceIs::A, &base_shape, top_shape,
+               1e-3, kept);
+  REQUIRE(kept.valid);
+  const Eigen::Isometry3d moved = pose({0.1 - 2e-5, -0.05 + 3e-5, 0.5 - lowest - 5e-7}, corner * rotation(4e-5, Vector3d(1, 1, 0)));
+  CHECK(keptDrift(kept, pose_a.inverse(Eigen::Isometry) * moved, top.radius) <= 1e-4);
+  ContactManifold reused, fresh;
+  REQUIRE(reuseManifold(kept, pose_a, moved, ReferenceIs::A, 1e-3, reused));
+  SatCache fresh_cache;
+  REQUIRE(collide(base, pose_a, top, moved, 1e-3, fresh_cache, fresh));
+  REQUIRE(fresh.points.size() == 1);
+  REQUIRE(reused.points.size() == 1);
+  CHECK((reused.normal - fresh.normal).norm() < 1e-12);
+  CHECK(std::abs(reused.points[0].depth - fresh.points[0].depth) < 1e-12);
+}
