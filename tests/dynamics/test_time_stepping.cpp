@@ -290,6 +290,42 @@ TEST_CASE("the same chain under the Baraff model gains no energy above 1e-3 of t
   CHECK(energy.largest() < 1e-3);
 }
 
+// The same chain with semi-implicit Euler, whose joint forces are held over the step at the
+// velocity level (joints/joint_integrator.h): no energy above the lowest reached, no fault, over
+// 4 s at the scene's step. Held at the acceleration level they fed the whip energy at every step
+// under both models, and by 1 s the state was not finite (2026-11-28). What the velocity level
+// costs instead is dissipation: 7.5 J of the 14.7 J the fall releases are gone by 4 s (Baraff).
+TEST_CASE("the chain with semi-implicit Euler gains no energy over 4 s (Baraff model)", "[joints]") {
+  test::EnergyRise energy;
+  test::SceneRun run = test::runScene(
+      "demos/chain", 4, [&](const World& world) { energy.add(world); }, 1000000,
+      [](Scene& s) { s.simulation.step.integrator = Integrator::SemiImplicitEuler; }, true);
+  INFO("largest rise " << energy.largest() << " of the energy in play; " << run.faults << " steps at fault; the first: "
+                       << run.first_fault);
+  CHECK(run.faults == 0);
+  CHECK(energy.largest() < 1e-3);
+}
+
+// Known failure: under time stepping the same run gains nothing until 3.37 s, where one step
+// (links 8 and 9 lying folded onto each other, a link beside them touching both) turns both at
+// 146 rad/s and adds 3.2 J before the next step takes it back; at 1/960 s the run gains nothing
+// (2026-11-28). The joints' and contacts' one impulse problem of that fold is the suspect.
+TEST_CASE("the chain with semi-implicit Euler gains no energy over 4 s (time stepping; reached: one step adds 3.2 J at 3.37 s)",
+          "[time_stepping][joints][!shouldfail]") {
+  test::EnergyRise energy;
+  test::SceneRun run = test::runScene(
+      "demos/chain", 4, [&](const World& world) { energy.add(world); }, 1000000,
+      [](Scene& s) {
+        s.simulation.step.model = ContactModel::TimeStepping;
+        s.simulation.step.integrator = Integrator::SemiImplicitEuler;
+      },
+      true);
+  INFO("largest rise " << energy.largest() << " of the energy in play; " << run.faults << " steps at fault; the first: "
+                       << run.first_fault);
+  CHECK(run.faults == 0);
+  CHECK(energy.largest() < 1e-3);
+}
+
 // The model detects and corrects at the end of each step (time_stepping_model.h), and its
 // projection goes on past its eight passes over the pairs still deeper than 100 times the
 // contact tolerance (tuning::kProjectionDeepFactor), until none is: so no step of the 100-piece

@@ -13,7 +13,7 @@ constexpr double kLeavingRate = 1e-9;
 }  // namespace
 
 void jointAccelerationRows(const World& world, const std::vector<Wrench>& applied, double dt, bool motors,
-                           std::vector<JointRow>& rows, Eigen::VectorXd& b) {
+                           std::vector<JointRow>& rows, Eigen::VectorXd& b, JointHold hold) {
   RowChoice choice;
   choice.motors = motors;
   buildJointRows(world, choice, rows);
@@ -36,7 +36,9 @@ void jointAccelerationRows(const World& world, const std::vector<Wrench>& applie
   b.resize(n);
   for (int i = 0; i < n; ++i) {
     const JointRow& r = rows[i];
-    double acc = r.bias;
+    // A velocity motor's row has its own target (below); the others hold J a + J' v = 0, or bring
+    // the row's velocity to zero within the step.
+    double acc = hold == JointHold::Velocity && r.kind != JointRow::Kind::Motor ? jointRowVelocity(world, r) / dt : r.bias;
     if (r.a >= 0) acc += r.lin_a.dot(lin[r.a]) + r.ang_a.dot(ang[r.a]);
     if (r.b >= 0) acc += r.lin_b.dot(lin[r.b]) + r.ang_b.dot(ang[r.b]);
     if (r.kind == JointRow::Kind::Motor) acc -= (r.target_velocity - jointRowVelocity(world, r)) / dt;
@@ -44,11 +46,12 @@ void jointAccelerationRows(const World& world, const std::vector<Wrench>& applie
   }
 }
 
-void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt, bool velocity_motors) {
+void addJointForces(const World& world, std::vector<Wrench>& wrenches, double dt, bool velocity_motors,
+                    JointHold hold) {
   addMotorTorques(world, wrenches);
   thread_local std::vector<JointRow> rows;
   thread_local Eigen::VectorXd b;
-  jointAccelerationRows(world, wrenches, dt, velocity_motors, rows, b);
+  jointAccelerationRows(world, wrenches, dt, velocity_motors, rows, b, hold);
   if (rows.empty()) return;
   const Eigen::VectorXd f = solveJointRows(rows, jointDelassus(world, rows), b);
   for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -19,7 +19,7 @@ long integrateJoined(World& world, const std::vector<Wrench>& wrenches, const St
   const double dt = settings.dt;
   if (settings.integrator == Integrator::SemiImplicitEuler) {
     std::vector<Wrench> total = wrenches;
-    addJointForces(world, total, dt, velocity_motors);
+    addJointForces(world, total, dt, velocity_motors, JointHold::Velocity);
     return integrateBodies(world, total, settings);
   }
   const std::size_t n = world.bodies.size();
