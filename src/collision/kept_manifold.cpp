@@ -107,7 +107,8 @@ void keepManifold(const ContactManifold& m, bool found, const Eigen::Isometry3d&
   // other vertex of the first stands farther than the margin above that face's plane: the second
   // piece lies wholly under the plane, so no other feature pair is within the margin to be left
   // unreported, and drift below the slack brings none within it (a box resting on an edge or a
-  // corner of another, or leaning on it: two in five of the 1000-box pile's narrow phases).
+  // corner of another, or leaning on it; one or two points came from two in five of the 1000-box
+  // pile's narrow phases).
   const FaceOf face = ref_piece && (n == 1 || n == 2) && !m.closest_points
                          ? vertexOnFace(m, pose_ref, pose_moving, ref, *ref_piece, moving_piece, margin_m)
                          : FaceOf::None;
