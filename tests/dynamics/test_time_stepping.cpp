@@ -310,7 +310,7 @@ TEST_CASE("the chain with semi-implicit Euler gains no energy over 4 s (Baraff m
 // (links 8 and 9 lying folded onto each other, a link beside them touching both) turns both at
 // 146 rad/s and adds 3.2 J before the next step takes it back; at 1/960 s the run gains nothing
 // (2026-11-28). The joints' and contacts' one impulse problem of that fold is the suspect.
-TEST_CASE("the chain with semi-implicit Euler gains no energy over 4 s (time stepping; reached: one step adds 3.2 J at 3.37 s)",
+TEST_CASE("the chain with semi-implicit Euler gains no energy over 4 s under time stepping (reached: one step adds 3.2 J at 3.37 s)",
           "[time_stepping][joints][!shouldfail]") {
   test::EnergyRise energy;
   test::SceneRun run = test::runScene(
