@@ -47,14 +47,20 @@ double checkReusedIsFresh(const KeptManifold& kept, const CollisionHull& base, c
   return apart;
 }
 
+// A 0.5 m box (B) over a slab 2 m wide and 0.5 m thick (A) whose top face is the plane z = 0.5.
+struct BoxOverSlab {
+  ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
+  ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
+  CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
+  Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+};
+
 }  // namespace
 
 TEST_CASE("kept manifold: a box resting on a box, moved within the slack, gives the narrow phase's depths",
           "[kept_manifold]") {
-  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
-  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
-  const CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
-  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const BoxOverSlab scene;
+  const auto& [base_shape, top_shape, base, top, pose_a] = scene;
   const Eigen::Isometry3d built_at = pose({0.1, -0.05, 0.75 - 2e-7}, rotation(0.3, Vector3d::UnitZ()));
   const double margin = 1e-3, slack = 1e-4;
   SatCache cache;
@@ -163,10 +169,8 @@ TEST_CASE("kept manifold: a box overhanging the edge of the one below, its footp
 // depth is the corner's distance to the face plane, the narrow phase's own.
 TEST_CASE("kept manifold: a box resting on an edge on a box's face is kept, its reused depths the narrow phase's",
           "[kept_manifold]") {
-  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
-  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
-  const CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
-  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const BoxOverSlab scene;
+  const auto& [base_shape, top_shape, base, top, pose_a] = scene;
   const double tilt = 0.3, lift = 0.25 * (std::cos(tilt) + std::sin(tilt));
   const Eigen::Isometry3d built_at = pose({0.1, -0.05, 0.5 + lift - 2e-7}, rotation(tilt, Vector3d::UnitX()));
   const double margin = 1e-3, slack = 1e-4;
@@ -193,9 +197,8 @@ TEST_CASE("kept manifold: a box resting on an edge on a box's face is kept, its 
 // points), but a piece of another shape may report one feature with another within the margin.
 TEST_CASE("kept manifold: an edge on a face with another corner within the margin above the face is not kept",
           "[kept_manifold]") {
-  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
-  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
-  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const BoxOverSlab scene;
+  const auto& [base_shape, top_shape, base, top, pose_a] = scene;
   // The manifold of the corners within 1e-6 m of the face plane (z = 0.5), as the narrow phase
   // writes one: normal from the base (A) to the box (B), midpoints, depths, a feature id each.
   auto edgeManifold = [&](const Eigen::Isometry3d& at) {
@@ -233,10 +236,8 @@ TEST_CASE("kept manifold: an edge on a face with another corner within the margi
 // reports the corner alone, the rest stands centimetres above: kept, its reused depth exact.
 TEST_CASE("kept manifold: a box on a corner on a box's face is kept, its reused depth the narrow phase's",
           "[kept_manifold]") {
-  const ConvexPiece base_shape = makeBox(Vector3d(1.0, 1.0, 0.25));
-  const ConvexPiece top_shape = makeBox(Vector3d(0.25, 0.25, 0.25));
-  const CollisionHull base = makeCollisionHull(base_shape), top = makeCollisionHull(top_shape);
-  const Eigen::Isometry3d pose_a = pose({0, 0, 0.25});
+  const BoxOverSlab scene;
+  const auto& [base_shape, top_shape, base, top, pose_a] = scene;
   const Eigen::Quaterniond corner = rotation(0.3, Vector3d::UnitX()) * rotation(0.3, Vector3d::UnitY());
   double lowest = 0;
   for (const Vector3d& v : top_shape.vertices) lowest = std::min(lowest, (corner * v).z());

@@ -45,8 +45,9 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
     detected_dt_ = dt;
     shared.contacts_fresh = true;
   }
-  // Free motion with joints still follows them (their forces at every integrator stage hold the
-  // centripetal pull); what drift is left is projected out, positions only (joint_projection.h).
+  // Free motion with joints still follows them (their forces in the integrator: at every RK4 stage,
+  // holding the centripetal pull; joint_integrator.h); what drift is left is projected out,
+  // positions only (joint_projection.h).
   // Last, so that a joint ends the step closed; a move leaves the contacts in hand stale.
   if (!world.joints.empty())
     shared.timed(Correct, [&] {
