@@ -159,6 +159,10 @@ inline constexpr int kProjectionPasses = 8;
 // (drift_projection.h; measured 2026-11-28).
 inline constexpr int kProjectionMaxPasses = 32;
 inline constexpr double kProjectionDeepFactor = 100;
+// Time-stepping drift projection, deep passes: a pair whose normal is within 45 degrees of
+// gravity's line is stacked, and its lower body is held while the upper is pushed out
+// (drift_projection.h).
+inline constexpr double kProjectionStackedCos = 0.7071;
 // Time-stepping drift projection: sweeps over one pair's points within a pass at most (a face's
 // four corners come out level within a few; drift_projection.h).
 inline constexpr int kProjectionPairSweeps = 8;

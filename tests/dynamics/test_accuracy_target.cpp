@@ -15,8 +15,10 @@ using tumble::test::runScene;
 
 namespace {
 
-std::function<void(Scene&)> withTarget(double penetration_m, double energy_drift = 0) {
+// A penetration target (0: none), an energy-drift target, and a step (0: the scene's).
+std::function<void(Scene&)> withTarget(double penetration_m, double energy_drift = 0, double dt = 0) {
   return [=](Scene& s) {
+    if (dt > 0) s.simulation.step.dt = dt;
     s.simulation.step.target.penetration_m = penetration_m;
     s.simulation.step.target.energy_drift = energy_drift;
   };
@@ -43,13 +45,13 @@ std::vector<double> finalState(const std::string& scene_name, const AccuracyTarg
 }  // namespace
 
 TEST_CASE("accuracy target: auto refines the pile's steps until no step ends deeper than the target", "[target]") {
-  // Without a target the landing pile ends steps 0.63 mm deep (time stepping at 1/240 s, its
-  // drift projection at each step's end taking out what is deeper; 6.4 mm when it ran at the next
-  // step's start): the target below is not met by the scene's step alone.
-  constexpr double kTarget = 2e-4;
-  auto loose = runScene("pile", 1.0);
+  // Without a target the landing pile, run at 1/120 s, ends steps 0.32 mm deep (time stepping, its
+  // drift projection at each step's end taking out what is deeper than 0.1 mm; at the scene's own
+  // 1/240 s, 0.13 mm): the target below is not met by the scene's step alone.
+  constexpr double kTarget = 1.5e-4, kStep = 1.0 / 120;
+  auto loose = runScene("pile", 1.0, {}, 1, withTarget(0, 0, kStep));
   REQUIRE(loose.max_penetration > 2 * kTarget);
-  auto held = runScene("pile", 1.0, {}, 1, withTarget(kTarget));
+  auto held = runScene("pile", 1.0, {}, 1, withTarget(kTarget, 0, kStep));
   // Measured here geometrically (SAT over every pair of pieces), independently of the narrow
   // phase the refinement measures by: the two find the same deepest axis, up to the SAT's face
   // search against the narrow phase's clipped points (1 %).
@@ -69,7 +71,7 @@ TEST_CASE("accuracy target: a target the scene's step already meets changes no b
 
 TEST_CASE("accuracy target: a refined run reruns bit for bit", "[target]") {
   AccuracyTarget tight;
-  tight.penetration_m = 5e-4;
+  tight.penetration_m = 5e-5;
   const std::vector<double> first = finalState("pile", tight, 160), second = finalState("pile", tight, 160);
   CHECK(std::memcmp(first.data(), second.data(), first.size() * sizeof(double)) == 0);
   CHECK(first != finalState("pile", AccuracyTarget{}, 160));   // the refinement did act

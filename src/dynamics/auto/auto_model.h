@@ -15,7 +15,7 @@
 // scene's (the 100-piece pile's first second at dt = 1/240 s: 15 mm deep under time stepping at
 // 0.07 s per simulated second, 0.16 mm under the Baraff model at 16 s; time stepping refined to a
 // 1 mm target takes 0.23 s over the whole pile; measured 2026-11-25, before time stepping
-// corrected at each step's end, which leaves 0.63 mm without a target). Auto meets a penetration target with the model it
+// corrected at each step's end, which leaves 0.13 mm without a target). Auto meets a penetration target with the model it
 // chose by its contact tolerance (no coarser than the target) and by refining the step where a
 // step ends deeper (step_refinement.h). An energy target is measured and reported
 // (target_watch.h): the largest rises measured are 1.3e-6 of the energy in play on the pile under

@@ -10,7 +10,8 @@
 // fraction of v dt deep (the 100-piece pile, deepest overlap at a step's end over its first
 // second: 15 mm at dt = 1/240 s, 6.2 mm at 1/480, 2.4 mm at 1/960, 1.6 mm at 1/1920; measured
 // 2026-11-25, while the drift projection ran at the next step's start: at the step's end it now
-// leaves 0.63 mm at 1/240 s, 2026-11-28); the Baraff model
+// leaves 0.63 mm at 1/240 s, 2026-11-28, and 0.13 mm since its deep passes hold the lower body of a
+// stacked pair, 2026-11-29); the Baraff model
 // keeps contacts within its tolerance except where a pair is already deep when a sub-step begins,
 // which a shorter step makes rarer. Taking a step back is cheap: the bodies' states, and the
 // contacts detected again. A taken-back attempt leaves only warm starts behind (a solver's

@@ -37,26 +37,36 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   auto depthNow = [&](const Contact& c) { return c.depth - c.normal.dot(shift(c.b, c.point) - shift(c.a, c.point)); };
   // A contact's Response (the header) is fixed for the whole projection (start poses, start
   // inertia), so it is worked out once per contact, at the first visit of its pair.
-  auto responseOf = [&](const Contact& c) {
+  // Under gravity, a deep pass treats the lower body of a pair stacked along gravity as fixed
+  // (shock propagation, below and in the header): `shock` selects that response.
+  const double g = world.gravity.norm();
+  const Eigen::Vector3d up = g > 0 ? Eigen::Vector3d(-world.gravity / g) : Eigen::Vector3d::Zero();
+  auto responseOf = [&](const Contact& c, bool shock) {
     Response r;
+    const double rise = c.normal.dot(up);   // > 0: B above A
+    const bool hold_a = shock && rise >= tuning::kProjectionStackedCos;
+    const bool hold_b = shock && -rise >= tuning::kProjectionStackedCos;
+    const double mass_a = hold_a ? 0 : world.bodies[c.a].inv_mass, mass_b = hold_b ? 0 : world.bodies[c.b].inv_mass;
     const Eigen::Vector3d ta = (c.point - start_[c.a]).cross(c.normal), tb = (c.point - start_[c.b]).cross(c.normal);
-    r.turn_a = inverse_inertia_[c.a] * ta;
-    r.turn_b = inverse_inertia_[c.b] * tb;
-    r.translating = world.bodies[c.a].inv_mass + world.bodies[c.b].inv_mass;
+    r.turn_a = hold_a ? Eigen::Vector3d::Zero() : Eigen::Vector3d(inverse_inertia_[c.a] * ta);
+    r.turn_b = hold_b ? Eigen::Vector3d::Zero() : Eigen::Vector3d(inverse_inertia_[c.b] * tb);
+    r.mass_a = mass_a;
+    r.mass_b = mass_b;
+    r.translating = mass_a + mass_b;
     r.turning = r.translating + ta.dot(r.turn_a) + tb.dot(r.turn_b);
     r.largest_turn = std::max(r.turn_a.norm(), r.turn_b.norm());
     return r;
   };
   auto push = [&](const Contact& c, const Response& r, double lambda, bool turning) {
-    moved_[c.a] -= world.bodies[c.a].inv_mass * lambda * c.normal;
-    moved_[c.b] += world.bodies[c.b].inv_mass * lambda * c.normal;
+    moved_[c.a] -= r.mass_a * lambda * c.normal;
+    moved_[c.b] += r.mass_b * lambda * c.normal;
     if (!turning) return;
     turned_[c.a] -= r.turn_a * lambda;
     turned_[c.b] += r.turn_b * lambda;
   };
   pushed_.assign(contacts.size(), 0);
-  responses_.resize(contacts.size());
-  has_response_.assign(contacts.size(), 0);
+  responses_.resize(2 * contacts.size());
+  has_response_.assign(2 * contacts.size(), 0);
   // A pair's depths change only when one of its bodies is pushed, so a pair found shallow is not
   // looked at again until one of them has been: pushes are numbered, and each body keeps the number
   // of its last, each pair the number current when it was found shallow.
@@ -70,6 +80,7 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
     // nothing ends the projection.
     const bool shallow_too = pass < tuning::kProjectionPasses && !deep_only;
     const double deep_from = shallow_too ? tol : tuning::kProjectionDeepFactor * tol;
+    const std::size_t which = shallow_too ? 0 : contacts.size();   // responses: own, or shock's
     bool moved_any = false;
     for (std::size_t g = 0; g < grouped.groups.size(); ++g) {
       const auto [begin, end] = grouped.groups[g];
@@ -86,13 +97,13 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
       for (std::size_t k = begin; k < end; ++k) {
         const std::size_t i = order[k];
         pushed_[i] = 0;
-        if (!has_response_[i]) responses_[i] = responseOf(contacts[i]), has_response_[i] = 1;
+        if (!has_response_[which + i]) responses_[which + i] = responseOf(contacts[i], !shallow_too), has_response_[which + i] = 1;
       }
       for (int sweep = 0; sweep < tuning::kProjectionPairSweeps; ++sweep) {
         double largest = 0;
         for (std::size_t k = begin; k < end; ++k) {
           const Contact& c = contacts[order[k]];
-          const Response& r = responses_[order[k]];
+          const Response& r = responses_[which + order[k]];
           double stiff = r.turning;
           if (!(stiff > 0)) continue;
           double& total = pushed_[order[k]];
