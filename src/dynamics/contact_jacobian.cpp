@@ -36,6 +36,7 @@ void tangentsOf(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& 
 
 Eigen::Matrix3d inverseInertiaWorld(const RigidBody& body) {
   if (body.is_static) return Eigen::Matrix3d::Zero();
+  if (body.isotropic()) return body.inv_inertia_body.x() * Eigen::Matrix3d::Identity();
   Eigen::Matrix3d R = body.rotation();
   return R * body.inv_inertia_body.asDiagonal() * R.transpose();
 }

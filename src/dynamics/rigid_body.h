@@ -40,8 +40,15 @@ struct RigidBody {
   // derived quantities
   Eigen::Vector3d velocity() const { return P * inv_mass; }
   Eigen::Matrix3d rotation() const { return q.toRotationMatrix(); }
-  // omega = R I^-1 R^T L: the inverse inertia in world axes applied to L.
+  // Equal principal moments (a cube, a sphere; and a static body's zeros): the inertia is the same
+  // about every axis, in every orientation, and needs no rotation.
+  bool isotropic() const {
+    return inv_inertia_body.x() == inv_inertia_body.y() && inv_inertia_body.y() == inv_inertia_body.z();
+  }
+  // omega = R I^-1 R^T L: the inverse inertia in world axes applied to L (I^-1 L when isotropic:
+  // exact, where the rotation there and back rounds).
   Eigen::Vector3d angularVelocity() const {
+    if (isotropic()) return inv_inertia_body.x() * L;
     Eigen::Matrix3d R = rotation();
     return R * inv_inertia_body.cwiseProduct(R.transpose() * L);
   }
