@@ -43,9 +43,10 @@ long DriftProjection::project(World& world, std::vector<Contact>& contacts, doub
   const Eigen::Vector3d up = g > 0 ? Eigen::Vector3d(-world.gravity / g) : Eigen::Vector3d::Zero();
   auto responseOf = [&](const Contact& c, bool shock) {
     Response r;
+    // The lower body is held only if the upper one can move (not under a fixed or sleeping body).
     const double rise = c.normal.dot(up);   // > 0: B above A
-    const bool hold_a = shock && rise >= tuning::kProjectionStackedCos;
-    const bool hold_b = shock && -rise >= tuning::kProjectionStackedCos;
+    const bool hold_a = shock && rise >= tuning::kProjectionStackedCos && world.bodies[c.b].inv_mass > 0;
+    const bool hold_b = shock && -rise >= tuning::kProjectionStackedCos && world.bodies[c.a].inv_mass > 0;
     const double mass_a = hold_a ? 0 : world.bodies[c.a].inv_mass, mass_b = hold_b ? 0 : world.bodies[c.b].inv_mass;
     const Eigen::Vector3d ta = (c.point - start_[c.a]).cross(c.normal), tb = (c.point - start_[c.b]).cross(c.normal);
     r.turn_a = hold_a ? Eigen::Vector3d::Zero() : Eigen::Vector3d(inverse_inertia_[c.a] * ta);

@@ -37,7 +37,8 @@
 // overlap at the end stayed 1.0e-4 m, and 14 boxes left the bin, not 21.
 //
 // In the deep passes, under gravity, a pair stacked along gravity's line (its normal within 45
-// degrees of it) is pushed apart by moving the upper body alone, the lower held as if fixed: the
+// degrees of it) is pushed apart by moving the upper body alone (if it can move: not a fixed or a
+// sleeping body), the lower held as if fixed: the
 // shock propagation of E. Guendelman, R. Bridson and R. Fedkiw ("Nonconvex rigid bodies with
 // stacking", 2003), applied to the position passes. Pushed apart by their masses, a deep pair in a
 // column sinks its lower body into the one below by half the depth, which the next pass pushes
@@ -84,7 +85,9 @@ class DriftProjection {
     double largest_turn = 0;               // the larger of their norms
   };
   std::vector<double> pushed_;           // per contact: the push it has given in this pass (m kg)
-  std::vector<Response> responses_;      // per contact, once its pair is first visited
+  // Per contact, once its pair is first visited: [0, m) pushed by their masses, [m, 2m) as the deep
+  // passes push it (a stacked pair's lower body held).
+  std::vector<Response> responses_;
   std::vector<char> has_response_;
   std::vector<long> last_push_;          // per body: the number of the last push that moved it
   std::vector<long> found_shallow_;      // per pair: the number of pushes made when it was last found shallow
