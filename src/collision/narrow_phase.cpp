@@ -458,7 +458,7 @@ bool collide(const CollisionHull& a, const Eigen::Isometry3d& pose_a, const Coll
     // pair farther than the margin is no contact at all.
     d = narrow::distance(p.a, p.b);
     if (d.distance > margin_m) return false;
-    if (certifiedGap(d, p) > sat_sep + narrow::kDepthAgreement * std::min(p.a.hull->size, p.b.hull->size)) {
+    if (certifiedGap(d, p) > sat_sep + clear) {
       const Eigen::Vector3d n = (d.point_b - d.point_a) / d.distance;
       if (nearParallelFaceContact(p, n, -d.distance, margin_m, out)) {
         narrow::reduceManifold(out.points, out.normal);

@@ -16,13 +16,7 @@ BodyState stateOf(const RigidBody& body) {
 }
 
 BodyState derivativeOf(const RigidBody& body, const BodyState& s, const Wrench& wrench) {
-  Eigen::Vector3d w;
-  if (body.isotropic()) {
-    w = body.inv_inertia_body.x() * s.L;
-  } else {
-    Eigen::Matrix3d R = toQuaternion(s.q).toRotationMatrix();
-    w = R * body.inv_inertia_body.cwiseProduct(R.transpose() * s.L);
-  }
+  const Eigen::Vector3d w = body.angularVelocityOf(toQuaternion(s.q), s.L);
   Eigen::Quaterniond q(s.q[0], s.q[1], s.q[2], s.q[3]);
   Eigen::Quaterniond dq = Eigen::Quaterniond(0, w.x(), w.y(), w.z()) * q;
   BodyState d;
@@ -55,9 +49,7 @@ void stepRk4(RigidBody& body, const Wrench& wrench, double dt) {
 
 // w = R I^-1 R^T L for a given orientation.
 Eigen::Vector3d angularVelocityAt(const RigidBody& body, const Eigen::Quaterniond& q) {
-  if (body.isotropic()) return body.inv_inertia_body.x() * body.L;   // the same at every orientation
-  Eigen::Matrix3d R = q.toRotationMatrix();
-  return R * body.inv_inertia_body.cwiseProduct(R.transpose() * body.L);
+  return body.angularVelocityOf(q, body.L);
 }
 
 // Semi-implicit (symplectic) Euler: momenta first, then positions from the new momenta.

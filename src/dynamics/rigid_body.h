@@ -47,10 +47,12 @@ struct RigidBody {
   }
   // omega = R I^-1 R^T L: the inverse inertia in world axes applied to L (I^-1 L when isotropic:
   // exact, where the rotation there and back rounds).
-  Eigen::Vector3d angularVelocity() const {
-    if (isotropic()) return inv_inertia_body.x() * L;
-    Eigen::Matrix3d R = rotation();
-    return R * inv_inertia_body.cwiseProduct(R.transpose() * L);
+  Eigen::Vector3d angularVelocity() const { return angularVelocityOf(q, L); }
+  // The same for an orientation and an angular momentum given (an integrator's stages).
+  Eigen::Vector3d angularVelocityOf(const Eigen::Quaterniond& at, const Eigen::Vector3d& momentum) const {
+    if (isotropic()) return inv_inertia_body.x() * momentum;
+    Eigen::Matrix3d R = at.toRotationMatrix();
+    return R * inv_inertia_body.cwiseProduct(R.transpose() * momentum);
   }
   double kineticEnergy() const {
     Eigen::Vector3d w = angularVelocity();
