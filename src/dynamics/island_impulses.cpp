@@ -59,7 +59,7 @@ bool solveIslandImpulsesInPlace(const World& world, const ContactRows& rows, std
     ++stats.unconverged_sweeps;
     // A warm start can leave an unconverged answer doing worse than no impulses: adding kinetic
     // energy (passive_impulses.h).
-    if (keepPassive(world, rows.rows, b, limits, p) < 1) ++stats.passive_scaled;
+    if (keepPassive(world, rows.rows, b, limits, p, settings.gravity_dt) < 1) ++stats.passive_scaled;
   }
   return solved.converged;
 }

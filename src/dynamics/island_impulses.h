@@ -23,6 +23,9 @@ struct IslandImpulseSettings {
   // Subspace rounds where the sweeps stop unconverged (island_impulses.cpp); off for a speed
   // setting that takes an unconverged answer by choice.
   bool subspace_rounds = true;
+  // A time-stepping solve: the step's length, over which gravity's impulse is in the velocities
+  // (passive_impulses.h: an unconverged answer may not raise the step's total energy). 0: other solves.
+  double gravity_dt = 0;
 };
 
 struct IslandImpulses {

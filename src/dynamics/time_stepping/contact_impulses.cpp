@@ -124,6 +124,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
                             : settings.time_stepping_sweeps;
       gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
       gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
+      gs.gravity_dt = dt;
       const bool converged = solveIslandImpulsesInPlace(world, rows, island, b, f, gs, own);
       if (!converged && small) {
         ContactLcp& exact = scratch.exact;
