@@ -14,9 +14,10 @@ void printPipelineStats(const Pipeline& pipeline) {
   const PipelineCounters& c = pipeline.counters();
   std::fprintf(stderr,
                "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld (%ld past a body's reach, "
-               "not made), unresolved %ld, impacts too deep to go back for %ld, contact work taken back %ld\n",
+               "not made), unresolved %ld, impacts too deep to go back for %ld, contact work taken back %ld, "
+               "steps solved again for a body sent past its reach %ld\n",
                c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.capped_projections,
-               c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid);
+               c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid, c.resolved_for_outrun);
   std::fprintf(stderr,
                "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld, "
                "dynamic-friction fallbacks %ld, impacts grown by their neighbours %ld\n",

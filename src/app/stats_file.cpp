@@ -29,7 +29,7 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
        {{"substeps", c.substeps}, {"back_steps", c.back_steps}, {"bisection_evaluations", c.bisection_evaluations},
         {"projections", c.projections}, {"capped_projections", c.capped_projections},
         {"stuck_substeps", c.stuck_substeps}, {"inconsistent_pairs", c.inconsistent_pairs},
-        {"contact_work_paid", c.contact_work_paid},
+        {"contact_work_paid", c.contact_work_paid}, {"resolved_for_outrun", c.resolved_for_outrun},
         {"bodies_integrated", c.bodies_integrated}}},
       {"contacts",
        {{"colliding", k.colliding}, {"resting", k.resting}, {"lcp_pivots", k.pivots}, {"lcp_failures", k.failures},

@@ -34,6 +34,7 @@ struct PipelineCounters {
   long capped_projections = 0;   // Baraff model: corrections not made, a body's reach for the step spent
   long contact_work_paid = 0;    // sub-steps whose contact forces did positive work, taken back
   long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
+  long resolved_for_outrun = 0;  // time stepping: steps solved again, a body sent past its reach (outrun_contacts.h)
   ContactSolveStats contacts;
   std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
   std::string model_choice;           // what the automatic model chose and why (empty otherwise)

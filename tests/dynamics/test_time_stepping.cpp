@@ -239,6 +239,7 @@ TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short
     cube.L.setZero();
     c.depth = depth;
     impulses.apply(world, {c}, {approach}, settings, min_bounce, stats);
+    impulses.remember();
     return cube.velocity().z();
   };
   stepWith(-1e-3, -10, 10);                       // the landing, closed by the margin

@@ -195,8 +195,6 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     records[i].landing_speed = landing ? std::max(approach[i], owed[i]) : 0;
     records[i].landing_carried = carried ? last[i]->landing_carried + 1 : 0;
   });
-  // The memory takes these records and gives back last step's storage, for the next step's.
-  memory_.replace(records);
 }
 
 }  // namespace tumble

@@ -45,8 +45,12 @@ class ContactImpulses {
   // the step's applied impulses (gravity). `approach` is each contact's normal approach speed
   // (m/s, > 0 closing) before those, the speed a bounce reverses. Impacts slower than
   // `min_bounce_speed` get no restitution (contact_solve_common.h).
+  // The next step's warm start is not touched until remember().
   void apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
              const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats);
+  // Keeps the impulses of the last apply() for the next step's warm start (a step solved again
+  // from its start keeps only its last solve's).
+  void remember() { memory_.replace(records_); }
   // This step's impulses (N s on B, world), as the next step's warm start will find them.
   const ImpulseMemory& memory() const { return memory_; }
 

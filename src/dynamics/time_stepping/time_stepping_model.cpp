@@ -5,6 +5,7 @@
 #include "dynamics/joints/joint_impulses.h"
 #include "dynamics/joints/joint_projection.h"
 #include "dynamics/joints/joint_summary.h"
+#include "dynamics/time_stepping/outrun_contacts.h"
 #include "dynamics/time_stepping/speculative_contacts.h"
 
 namespace tumble {
@@ -18,20 +19,34 @@ void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedS
   // another length.
   if (shared.has_contacts && !(shared.contacts_fresh && end_state_.matches(world) && detected_dt_ == dt))
     detectAndCorrect(world, settings, shared);
-  // Approach speeds before gravity's impulse: the speed an impact reverses.
-  // The projection has turned bodies: their spins are read again.
-  bodySpins(world, spin_);
-  approach_.resize(shared.contacts.size());
-  for (std::size_t i = 0; i < shared.contacts.size(); ++i) approach_[i] = -normalVelocity(world, shared.contacts[i], spin_);
-  shared.timed(Forces, [&] {
-    if (shared.apply_gravity) applyGravityImpulse(world, dt);
-  });
-  if (shared.has_contacts) {
-    const double min_bounce = minBounceSpeed(world, settings.contact, dt);
-    shared.timed(Resting, [&] {
-      impulses_.apply(world, shared.contacts, approach_, settings, min_bounce, shared.counters.contacts);
+  if (shared.has_contacts) step_start_.save(world);
+  const double min_bounce = shared.has_contacts ? minBounceSpeed(world, settings.contact, dt) : 0;
+  auto solve = [&](const std::vector<Contact>& contacts) {
+    // Approach speeds before gravity's impulse: the speed an impact reverses.
+    // The projection has turned bodies: their spins are read again.
+    bodySpins(world, spin_);
+    approach_.resize(contacts.size());
+    for (std::size_t i = 0; i < contacts.size(); ++i) approach_[i] = -normalVelocity(world, contacts[i], spin_);
+    shared.timed(Forces, [&] {
+      if (shared.apply_gravity) applyGravityImpulse(world, dt);
     });
+    if (shared.has_contacts)
+      shared.timed(Resting,
+                   [&] { impulses_.apply(world, contacts, approach_, settings, min_bounce, shared.counters.contacts); });
+  };
+  solve(shared.contacts);
+  // A body the solve sent farther than the contacts were found for (an impact spinning up a light
+  // plate): the step again from its start, with the contacts of its new motion (outrun_contacts.h).
+  if (shared.has_contacts && outrunsReach(world, shared.extents, reach_, dt, settings.contact.margin_m)) {
+    shared.timed(Detect, [&] {
+      outrun_.assign(shared.contacts.begin(), shared.contacts.end());
+      outrun_found_.add(world, shared.detector, settings, shared.body_radius, shared.apply_gravity, reach_, outrun_);
+    });
+    ++shared.counters.resolved_for_outrun;
+    step_start_.restore(world);
+    solve(outrun_);
   }
+  if (shared.has_contacts) impulses_.remember();
   // The joints' impulses: with the contacts', in one problem (contact_impulses.h); alone where
   // nothing can touch (joints/joint_impulses.h).
   if (!world.joints.empty() && !shared.has_contacts) shared.timed(Resting, [&] { applyJointStepImpulses(world, dt); });

@@ -4,6 +4,8 @@
 //   forces      gravity as an impulse                                     gravity.h
 //   resting     the contact impulses (restitution, friction pyramid),     contact_impulses.h
 //               with a world's joints in the same problem                 joints/contact_joint_lcp.h
+//   (again)     the step from its start, with the contacts of the motion   outrun_contacts.h
+//               the solve gave, where it sent a body past its reach
 //   integrate   free motion of every body over dt with its new momenta    integrator.h
 //               (the scene's integrator turns the bodies, gyroscopic term included)
 //   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
@@ -32,6 +34,7 @@
 #include "dynamics/contact_model.h"
 #include "dynamics/time_stepping/contact_impulses.h"
 #include "dynamics/time_stepping/drift_projection.h"
+#include "dynamics/time_stepping/outrun_contacts.h"
 
 namespace tumble {
 
@@ -53,6 +56,9 @@ class TimeSteppingModel final : public ContactModelStep {
   std::vector<Eigen::Vector3d> spin_;   // each body's angular velocity (body_extent.h, bodySpins)
   std::vector<double> approach_;   // per contact: normal approach speed before gravity's impulse
   std::string joints_line_;        // for `tumble check`; empty without joints
+  BodySnapshot step_start_;       // the state the step starts in, for a solve taken again
+  OutrunContacts outrun_found_;    // the contacts of a solve that outran the step's reach
+  std::vector<Contact> outrun_;    // the step's contacts with those
   BodySnapshot end_state_;         // the state the last step ended in, its contacts detected
   double detected_dt_ = 0;         // s: the step length those contacts were detected for
 };
