@@ -154,10 +154,10 @@ std::optional<Fault> FaultCheck::deepPenetration(const World& world,
   return f;
 }
 
-std::optional<Fault> FaultCheck::unexplainedMotion(const World& world) {
+std::optional<Fault> FaultCheck::unexplainedMotion(const World& world, const Pipeline& pipeline) {
   const double dt = world.time - last_time_;
   last_time_ = world.time;
-  std::optional<UnexplainedMotion> m = motion_.afterStep(world, dt);
+  std::optional<UnexplainedMotion> m = motion_.afterStep(world, dt, pipeline.peakSpeeds(), pipeline.peakSpins());
   if (!m) return std::nullopt;
   Fault f;
   f.kind = Fault::Kind::UnexplainedMotion;
@@ -203,7 +203,7 @@ std::optional<Fault> FaultCheck::afterStep(const World& world, const Pipeline& p
   if (f) return record(*f, world, step, stages);
   const double stored = pipeline.storedEnergy();
   measure(world, stored, pipeline.contacts());
-  std::optional<Fault> checks[] = {unexplainedMotion(world), runawayEnergy(world, stored),
+  std::optional<Fault> checks[] = {unexplainedMotion(world, pipeline), runawayEnergy(world, stored),
                                    deepPenetration(world, pipeline.contacts()), energyGain(world, stored)};
   // A joint's motor does work (a PD motor lifts an arm, a velocity motor spins a wheel): a scene
   // with one is not passive, and its energy may rise.

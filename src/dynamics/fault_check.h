@@ -87,7 +87,7 @@ class FaultCheck {
   std::optional<Fault> nonFinite(const World& world) const;
   std::optional<Fault> runawayEnergy(const World& world, double stored) const;
   std::optional<Fault> deepPenetration(const World& world, const std::vector<Contact>& contacts) const;
-  std::optional<Fault> unexplainedMotion(const World& world);
+  std::optional<Fault> unexplainedMotion(const World& world, const Pipeline& pipeline);
   std::optional<Fault> energyGain(const World& world, double stored);
   double energyOf(const RigidBody& body, int index) const;
   std::string stagesRun(const std::vector<StageTime>& profile);

@@ -18,7 +18,9 @@ MotionCheck::State MotionCheck::stateOf(const RigidBody& body) {
   return {body.x, body.velocity(), body.angularVelocity(), body.q};
 }
 
-std::optional<UnexplainedMotion> MotionCheck::afterStep(const World& world, double dt) {
+std::optional<UnexplainedMotion> MotionCheck::afterStep(const World& world, double dt,
+                                                        const std::vector<double>& peak_speed,
+                                                        const std::vector<double>& peak_spin) {
   std::optional<UnexplainedMotion> worst;
   double worst_excess = 0;
   const double g = world.gravity.norm();
@@ -30,8 +32,10 @@ std::optional<UnexplainedMotion> MotionCheck::afterStep(const World& world, doub
     // Every point of the body moves by at most |dx| + 2 r sin(theta / 2), theta the turn.
     const double turn = 2 * std::acos(std::min(1.0, std::abs(was.q.dot(now.q))));
     const double moved = (now.x - was.x).norm() + 2 * radius_[i] * std::sin(0.5 * turn);
-    const double speed = std::max(was.v.norm(), now.v.norm()) + g * dt +
-                         std::max(was.w.norm(), now.w.norm()) * radius_[i];
+    const double peak_v = i < peak_speed.size() ? peak_speed[i] : 0.0;
+    const double peak_w = i < peak_spin.size() ? peak_spin[i] : 0.0;
+    const double speed = std::max({was.v.norm(), now.v.norm(), peak_v}) + g * dt +
+                         std::max({was.w.norm(), now.w.norm(), peak_w}) * radius_[i];
     const double allowed = speed * dt + allowance_[i];
     if (moved - allowed > worst_excess) {
       worst_excess = moved - allowed;

@@ -25,6 +25,8 @@ Pipeline::Pipeline(const World& world, const StepSettings& settings)
 }
 
 void Pipeline::step(World& world, const StepSettings& settings) {
+  shared_.peak_speed.assign(world.bodies.size(), 0.0);
+  shared_.peak_spin.assign(world.bodies.size(), 0.0);
   model_->step(world, settings, shared_);
   settleAtRest(world, settings);
 }

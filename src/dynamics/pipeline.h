@@ -43,6 +43,10 @@ class Pipeline {
   ContactModel runningModel(const StepSettings& settings) const { return model_->running(settings.model); }
   // Energy held in compliant contacts (J; the penalty model's springs), for the energy checks.
   double storedEnergy() const { return model_->storedEnergy(); }
+  // Each body's largest speed and spin within the last step (shared_stages.h; zero where a model
+  // has no sub-steps).
+  const std::vector<double>& peakSpeeds() const { return shared_.peak_speed; }
+  const std::vector<double>& peakSpins() const { return shared_.peak_spin; }
   // Each contact's impulse over the last step, where the model keeps them (contact_model.h).
   StepImpulses lastImpulses() const { return model_->lastImpulses(); }
   // While set, the model appends the impacts it resolves (shared_stages.h, ImpactMark).

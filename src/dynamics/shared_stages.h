@@ -84,6 +84,11 @@ struct SharedStages {
   const double min_thickness;   // m: the thinnest piece of any body
   std::vector<BodyExtent> extents;   // each body's radius and thinnest piece
   std::vector<double> body_radius;   // m: each body's farthest vertex from its centre of mass
+  // Each body's largest speed (m/s) and spin (rad/s) a model integrated it with within the step,
+  // sub-steps included, for the fault check's bound on motion (motion_check.h): the Baraff model
+  // may move a body faster between two of a step's impacts than at either end of the step. Reset by
+  // the pipeline before each step; a model without sub-steps leaves them at zero.
+  std::vector<double> peak_speed, peak_spin;
   SleepKeeper sleep;
 
   std::vector<Contact> contacts;     // the world's contacts now (for overlays and the fault check)
