@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_rows.h"
@@ -35,15 +34,6 @@ double kineticEnergyOf(const World& world) {
   for (const RigidBody& b : world.bodies)
     if (!b.is_static) e += b.kineticEnergy();
   return e;
-}
-
-void saveMomenta(const World& world, std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& out) {
-  out.resize(world.bodies.size());
-  for (std::size_t k = 0; k < world.bodies.size(); ++k) out[k] = {world.bodies[k].P, world.bodies[k].L};
-}
-
-void restoreMomenta(World& world, const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& saved) {
-  for (std::size_t k = 0; k < world.bodies.size(); ++k) std::tie(world.bodies[k].P, world.bodies[k].L) = saved[k];
 }
 
 }  // namespace
@@ -124,14 +114,14 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     // kinetic energy, the step is solved again with every bounce dropped (each contact only
     // stopped), which can only take energy.
     const bool bounces = std::any_of(want.begin(), want.end(), [](double w) { return w > 0; });
-    if (bounces) saveMomenta(world, before_);
+    if (bounces) before_.save(world);
     const double energy_before = bounces ? kineticEnergyOf(world) : 0;
     Eigen::VectorXd f = solveContactsWithJoints(world, exact, joint_rows, joint_b, joined, stats);
     if (bounces) {
-      saveMomenta(world, joined_);   // the joints' impulses applied
+      joined_.save(world);   // the joints' impulses applied
       applyAlongRows(world, exact.rows, f);
       const bool gained = kineticEnergyOf(world) > energy_before * (1 + kBounceEnergySlack);
-      restoreMomenta(world, gained ? before_ : joined_);
+      (gained ? before_ : joined_).restore(world);
       if (gained) {
         for (std::size_t k = 0; k < m; ++k) exact.problem.b[exact.normal_row[k]] += std::max(want[k], 0.0);
         f = solveContactsWithJoints(world, exact, joint_rows, joint_b, joined, stats);

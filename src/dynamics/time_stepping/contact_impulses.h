@@ -19,9 +19,9 @@
 // late (first order in dt), as every quantity of this model is.
 #pragma once
 
-#include <utility>
 #include <vector>
 
+#include "dynamics/body_snapshot.h"
 #include "dynamics/contact.h"
 #include "dynamics/contact_islands.h"
 #include "dynamics/contact_solve_common.h"
@@ -67,9 +67,9 @@ class ContactImpulses {
   ContactIslands islands_;
   std::vector<ContactSolveStats> island_stats_;
   std::vector<ImpulseRecord> records_;
-  // With joints: the bodies' momenta (P, L) before the solve and after the joints' impulses, for
-  // an answer whose bounces add kinetic energy (contact_impulses.cpp).
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> before_, joined_;
+  // With joints: the bodies before the solve and after the joints' impulses, for an answer whose
+  // bounces add kinetic energy (contact_impulses.cpp).
+  BodySnapshot before_, joined_;
 };
 
 }  // namespace tumble
