@@ -19,9 +19,9 @@ void printPipelineStats(const Pipeline& pipeline) {
                c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.capped_projections,
                c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid, c.resolved_for_outrun);
   std::fprintf(stderr,
-               "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld, "
-               "dynamic-friction fallbacks %ld, impacts grown by their neighbours %ld\n",
-               c.contacts.colliding, c.contacts.resting, c.contacts.pivots, c.contacts.failures,
+               "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld (%ld more settled by "
+               "complementary pivoting), dynamic-friction fallbacks %ld, impacts grown by their neighbours %ld\n",
+               c.contacts.colliding, c.contacts.resting, c.contacts.pivots, c.contacts.failures, c.contacts.lemke_settled,
                c.contacts.friction_fallbacks, c.contacts.merged_impacts);
   std::fprintf(stderr,
                "  resting islands solved by Gauss-Seidel %ld (%ld after pivoting stopped short; "

@@ -33,6 +33,7 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
         {"bodies_integrated", c.bodies_integrated}}},
       {"contacts",
        {{"colliding", k.colliding}, {"resting", k.resting}, {"lcp_pivots", k.pivots}, {"lcp_failures", k.failures},
+        {"lcp_settled_by_lemke", k.lemke_settled},
         {"friction_fallbacks", k.friction_fallbacks}, {"iterative_islands", k.iterative_islands},
         {"iterative_fallbacks", k.iterative_fallbacks}, {"sweeps", k.sweeps},
         {"unconverged_sweeps", k.unconverged_sweeps}, {"active_set_steps", k.active_set_steps},

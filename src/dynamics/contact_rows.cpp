@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "dynamics/lcp/dantzig_solver.h"
+#include "dynamics/lcp/lemke_friction.h"
 
 namespace tumble {
 namespace {
@@ -150,6 +151,18 @@ void solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats, lcp::Lc
   settings.max_friction_passes = tuning::kMaxFrictionPasses;
   lcp::solveDantzig(p, settings, r);
   stats.pivots += r.iterations;
+  // Friction passes that do not settle (their fixed point need not contract): the same problem by
+  // complementary pivoting, which reaches an answer where one exists (lcp/lemke_friction.h), on
+  // problems small enough for its dense O(n^3) factorisations. Its answer is taken only if exact.
+  if (!usableLcpAnswer(r, p) && p.size() <= tuning::kLemkeMaxRows && lcp::lemkeCovers(p)) {
+    thread_local lcp::LcpResult settled;
+    lcp::solveLemkeFriction(p, lcp::LemkeSettings{}, settled);
+    stats.pivots += settled.iterations;
+    if (settled.status == lcp::LcpStatus::Solved) {
+      std::swap(r, settled);
+      ++stats.lemke_settled;
+    }
+  }
   if (r.status != lcp::LcpStatus::Solved) ++stats.failures;
 }
 

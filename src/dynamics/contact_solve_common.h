@@ -13,6 +13,7 @@ struct ContactSolveStats {
   long colliding = 0, resting = 0;  // contacts of each class seen
   long pivots = 0;                  // LCP pivots spent
   long failures = 0;                // LCP solves that did not converge (result used anyway)
+  long lemke_settled = 0;           // solves whose friction passes did not settle, by complementary pivoting
   long friction_fallbacks = 0;      // islands whose dynamic friction diverged (boxed friction used)
   long iterative_islands = 0;       // resting islands solved by Gauss-Seidel (too large to pivot)
   long iterative_fallbacks = 0;     // of those: pivoting stopped short with unusable forces
@@ -23,6 +24,7 @@ struct ContactSolveStats {
 
   ContactSolveStats& operator+=(const ContactSolveStats& o) {
     colliding += o.colliding, resting += o.resting, pivots += o.pivots, failures += o.failures;
+    lemke_settled += o.lemke_settled;
     friction_fallbacks += o.friction_fallbacks, iterative_islands += o.iterative_islands;
     iterative_fallbacks += o.iterative_fallbacks, sweeps += o.sweeps, unconverged_sweeps += o.unconverged_sweeps;
     active_set_steps += o.active_set_steps, passive_scaled += o.passive_scaled;
