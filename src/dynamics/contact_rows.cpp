@@ -153,14 +153,16 @@ void solveContactLcp(const lcp::LcpProblem& p, ContactSolveStats& stats, lcp::Lc
   stats.pivots += r.iterations;
   // Friction passes that do not settle (their fixed point need not contract): the same problem by
   // complementary pivoting, which reaches an answer where one exists (lcp/lemke_friction.h), on
-  // problems small enough for its dense O(n^3) factorisations. Its answer is taken only if exact.
+  // problems small enough for its dense O(n^3) factorisations. Its answer is taken where it is as
+  // near exact as a usable pivoting answer must be.
   if (!usableLcpAnswer(r, p) && p.size() <= tuning::kLemkeMaxRows && lcp::lemkeCovers(p)) {
     thread_local lcp::LcpResult settled;
     lcp::solveLemkeFriction(p, lcp::LemkeSettings{}, settled);
     stats.pivots += settled.iterations;
-    if (settled.status == lcp::LcpStatus::Solved) {
+    if (usableLcpAnswer(settled, p)) {
       std::swap(r, settled);
       ++stats.lemke_settled;
+      return;
     }
   }
   if (r.status != lcp::LcpStatus::Solved) ++stats.failures;

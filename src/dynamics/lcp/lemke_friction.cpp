@@ -312,21 +312,37 @@ void solveLemkeFriction(const LcpProblem& p, const LemkeSettings& settings, LcpR
   }
   thread_local Expanded e;
   thread_local Eigen::VectorXd z;
+  thread_local Eigen::MatrixXd regularised;
   expand(p, e);
-  const LcpStatus status = LemkePath(e.M, e.q, settings).run(z, r.iterations);
-  z = z.cwiseProduct(e.scale);
-  const int nn = static_cast<int>(e.plain.size());
-  for (int a = 0; a < nn; ++a) r.f[e.plain[a]] = z[a];
-  for (std::size_t j = 0; j < e.edge.size(); ++j)
-    for (const auto& [row, sign] : e.edge[j])
-      if (row >= 0) r.f[row] += sign * z[nn + j];
-  r.w.noalias() = p.A * r.f;
-  r.w += p.b;
-  r.residual = measureResidual(p, r.f, r.w);
-  // Solved when what is left is rounding of the terms that cancel in w.
-  const double terms = p.b.lpNorm<Eigen::Infinity>() + p.A.lpNorm<Eigen::Infinity>() * r.f.lpNorm<Eigen::Infinity>();
-  const bool exact = std::max(r.residual.complementarity, r.residual.bounds) <= 1e-9 * (terms + 1e-300);
-  r.status = status == LcpStatus::Solved && !exact ? LcpStatus::MaxIterations : status;
+  const int nn = static_cast<int>(e.plain.size()), forces = nn + static_cast<int>(e.edge.size());
+  // The answer of the path on M, into r; whether it is exact.
+  auto answer = [&](const Eigen::MatrixXd& M) {
+    int pivots = 0;
+    const LcpStatus status = LemkePath(M, e.q, settings).run(z, pivots);
+    r.iterations += pivots;
+    z = z.cwiseProduct(e.scale);
+    r.f.setZero(p.size());
+    for (int a = 0; a < nn; ++a) r.f[e.plain[a]] = z[a];
+    for (std::size_t j = 0; j < e.edge.size(); ++j)
+      for (const auto& [row, sign] : e.edge[j])
+        if (row >= 0) r.f[row] += sign * z[nn + j];
+    r.w.noalias() = p.A * r.f;
+    r.w += p.b;
+    r.residual = measureResidual(p, r.f, r.w);
+    // Exact when what is left is rounding of the terms that cancel in w.
+    const double terms = p.b.lpNorm<Eigen::Infinity>() + p.A.lpNorm<Eigen::Infinity>() * r.f.lpNorm<Eigen::Infinity>();
+    const bool exact = std::max(r.residual.complementarity, r.residual.bounds) <= 1e-9 * (terms + 1e-300);
+    r.status = status == LcpStatus::Solved && !exact ? LcpStatus::MaxIterations : status;
+    return r.status == LcpStatus::Solved;
+  };
+  if (answer(e.M) || settings.regularisation <= 0) return;
+  // Where rounding defeated the path (a tower of blocks, each face four coplanar corners: the
+  // edges' and the redundant normals' rows make most bases near singular), the path again on
+  // M + eps I over the impulses: a unique answer, within eps of the force of being exact.
+  regularised = e.M;
+  for (int x = 0; x < forces; ++x) regularised(x, x) += settings.regularisation;
+  answer(regularised);
+  if (r.status == LcpStatus::Solved) r.status = LcpStatus::MaxIterations;   // near, not exact
 }
 
 }  // namespace tumble::lcp
