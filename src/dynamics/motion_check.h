@@ -1,7 +1,8 @@
 // A run-time check for motion no velocity explains: a step may move a body's points no farther
 // than its speeds allow, (|v| + |g| dt + |w| r) dt with the largest of each speed at the step's
-// two ends and within it (a model's sub-steps between two impacts of one step), plus what the position correction may move it by — at most the deepest overlap the
-// fault check lets pass (half the body's thinnest piece), since a correction only removes overlap.
+// two ends and within it (a model's sub-steps between two impacts of one step), plus what the
+// position correction may move it by — at most the deepest overlap the fault check lets pass
+// (half the body's thinnest piece), since a correction only removes overlap.
 // A teleport (a body moved metres in one step while its velocity stays small) exceeds this; a
 // fall, a bounce, a spin or an impact mid-step does not.
 #pragma once

@@ -7,9 +7,10 @@
 // the step held no contact; it ended the step 3.1 cm deep and the drift projection pushed it out
 // by as much, a jump the run-time fault check reports (a body moved farther than its speeds allow).
 // Where a body's speeds after the solve carry it past its reach by more than kOutrunShare of its
-// thinnest piece (at least the margin), the step detects again, out to the farther of the two reaches and along the new motion (the swept and
-// the reachable speculative contacts of speculative_contacts.h), and adds what it finds that the
-// step's contacts lack; the caller solves the step again from its start with them.
+// thinnest piece (at least the margin), the step detects again, out to the farther of the two
+// reaches and along the new motion (the swept and the reachable speculative contacts of
+// speculative_contacts.h), and adds what it finds that the step's contacts lack; the caller
+// solves the step again from its start with them.
 #pragma once
 
 #include <utility>
