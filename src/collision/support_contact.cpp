@@ -43,8 +43,11 @@ SupportQuery query(const HullView& a, const HullView& b) {
 // What of a piece faces along `dir` (unit): 1 point, 2 (a line), or a convex polygon in order.
 using Feature = std::vector<Eigen::Vector3d>;
 
-void discFeature(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, double r, Feature& f) {
-  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+// The rim points of a disc, starting at `u` (unit, square to the axis): a tilted disc starts at
+// its lowest rim point, so the point the pair touches first is one of them, exactly.
+void discFeature(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, const Eigen::Vector3d& u, double r,
+                 Feature& f) {
+  const Eigen::Vector3d v = axis.cross(u);
   for (int k = 0; k < kRimPoints; ++k) {
     const double t = 2 * M_PI * k / kRimPoints;
     f.push_back(centre + r * (std::cos(t) * u + std::sin(t) * v));
@@ -61,15 +64,24 @@ Feature featureAlong(const HullView& h, const Eigen::Vector3d& dir) {
     const double along = axis.dot(dir);
     Eigen::Vector3d across = dir - along * axis;
     const bool cylinder = p.revolution == ConvexPiece::Revolution::Cylinder;
-    if (along > facing && cylinder) discFeature(top, axis, p.disc_radius_m, f);
-    else if (along < -facing) discFeature(base, axis, p.disc_radius_m, f);
+    const double r = p.disc_radius_m;
+    if (along > facing && cylinder) discFeature(top, axis, axis.unitOrthogonal(), r, f);
+    else if (along < -facing) discFeature(base, axis, axis.unitOrthogonal(), r, f);
     else if (cylinder && std::abs(along) < flat) {
       across.normalize();
-      f = {base + p.disc_radius_m * across, top + p.disc_radius_m * across};
-    } else if (!cylinder && across.norm() > flat) {
-      // a cone's slant faces dir when its rim point and its apex are equally far along it
-      const Eigen::Vector3d rim = base + p.disc_radius_m * across.normalized();
-      if (std::abs((rim - top).dot(dir)) < flat * (rim - top).norm()) f = {rim, top};
+      f = {base + r * across, top + r * across};
+    } else if (cylinder) {
+      // A tilted can touches at its rim's lowest point, but the rim beside it comes within the
+      // margin as the can rocks: the whole rim goes in, and the points beyond the margin are
+      // dropped by their depths, as the SAT path drops an incident face's far corners.
+      discFeature(along > 0 ? top : base, axis, across.normalized(), r, f);
+    } else {
+      // a cone's slant faces dir when its rim point and its apex are equally far along it; its
+      // base (tilted) faces dir when the rim's lowest point is farther along it than the apex
+      const Eigen::Vector3d rim = base + r * across.normalized();
+      const double lead = (rim - top).dot(dir);
+      if (std::abs(lead) < flat * (rim - top).norm()) f = {rim, top};
+      else if (lead > 0) discFeature(base, axis, across.normalized(), r, f);
     }
     if (f.empty()) f = {supportOf(h, dir)};
     return f;

@@ -76,6 +76,33 @@ TEST_CASE("a cylinder lying on a box holds its length, and tilted its rim's lowe
                    cache, axis) == Approx(0.01).margin(kExact));
 }
 
+TEST_CASE("a can tilted a little holds the rim within the margin, each point at its own depth",
+          "[narrow][revolved]") {
+  // Tilted by 0.01 rad about x, its lowest rim point 1e-6 m into the box: a rim point a turn phi
+  // from the lowest stands r sin(tilt) (1 - cos phi) higher, within the 1 mm margin up to about
+  // 3/4 of a turn for r = 0.1 m. As it rocks, those points come down: each is a contact before it
+  // touches, not only the lowest one (which alone is held beyond the margin's reach).
+  const double tilt = 0.01, r = 0.1, h = 0.3, margin = 1e-3;
+  const ConvexPiece can = makeCylinder(r, h);
+  const CollisionHull hb = makeCollisionHull(kBox), hc = makeCollisionHull(can);
+  const double reach = r * std::sin(tilt) + h / 2 * std::cos(tilt);
+  SatCache cache;
+  ContactManifold m;
+  const Eigen::Quaterniond tilted(Eigen::AngleAxisd(tilt, Vector3d::UnitX()));
+  REQUIRE(collide(hb, pose(Vector3d::Zero()), hc, pose({0, 0, 0.5 + reach - 1e-6}, tilted), margin, cache, m));
+  REQUIRE(m.points.size() >= 3);
+  CHECK(deepest(m) == Approx(1e-6).margin(kExact));
+  const Vector3d centre(0, 0, 0.5 + reach - 1e-6), axis = tilted * Vector3d::UnitZ();
+  const Vector3d base = centre - h / 2 * axis;
+  for (const ContactPoint& p : m.points) {
+    // the base's plane above p: (x - base) . axis = 0; p is a rim point, r from the base's centre
+    const double z = base.z() - ((p.position.x() - base.x()) * axis.x() + (p.position.y() - base.y()) * axis.y()) / axis.z();
+    CHECK(p.depth == Approx(0.5 - z).margin(kExact));
+    CHECK((Vector3d(p.position.x(), p.position.y(), z) - base).norm() == Approx(r).margin(kExact));
+    CHECK(p.depth >= -margin);
+  }
+}
+
 TEST_CASE("a cone stands on its base at its rim, and on its apex at one point", "[narrow][revolved]") {
   const ConvexPiece cone = makeCone(0.1, 0.3);   // base at z = -0.15 in its own frame
   const CollisionHull hb = makeCollisionHull(kBox), hc = makeCollisionHull(cone);
