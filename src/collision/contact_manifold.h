@@ -16,7 +16,7 @@ struct ContactPoint {
 struct ContactManifold {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, from A to B: B is pushed
                                                       // along +normal, A along -normal
-  std::vector<ContactPoint> points;                   // 1..4 points
+  std::vector<ContactPoint> points;                   // 1..8 points
   // Separated pieces closest at a vertex or an edge's end (narrow_phase.cpp, closestPointContact):
   // one point, the normal the direction between the closest points. That direction turns as the
   // pieces move past each other, so a gap along it may never close although it is within reach.

@@ -25,10 +25,13 @@ int discsOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, Disc (&disc
   return 2;
 }
 
-// A disc's lowest rim point and the three a quarter turn apart from it: what of the rim can rest on
-// the ground. A level disc has no lowest point; its four are then taken from the world's x axis
-// across the disc, so that they do not turn with rounding.
-void discPoints(const Disc& d, Eigen::Vector3d (&points)[4]) {
+// A disc's lowest rim point and the seven an eighth of a turn apart from it (a regular octagon, as
+// support_contact.cpp takes a disc against a face): what of the rim can rest on the ground. A level
+// disc has no lowest point; its points are then taken from the world's x axis across the disc, so
+// that they do not turn with rounding.
+constexpr int kRimPoints = 8;
+
+void discPoints(const Disc& d, Eigen::Vector3d (&points)[kRimPoints]) {
   Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
   Eigen::Vector3d e1 = down - down.dot(d.axis) * d.axis;
   if (e1.norm() < 1e-9) {
@@ -37,10 +40,10 @@ void discPoints(const Disc& d, Eigen::Vector3d (&points)[4]) {
   }
   e1.normalize();
   const Eigen::Vector3d e2 = d.axis.cross(e1);
-  points[0] = d.centre + d.radius * e1;
-  points[1] = d.centre + d.radius * e2;
-  points[2] = d.centre - d.radius * e1;
-  points[3] = d.centre - d.radius * e2;
+  for (int k = 0; k < kRimPoints; ++k) {
+    const double t = 2 * M_PI * k / kRimPoints;
+    points[k] = d.centre + d.radius * (std::cos(t) * e1 + std::sin(t) * e2);
+  }
 }
 
 bool collideRevolvedGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double height_m, double margin_m,
@@ -48,15 +51,15 @@ bool collideRevolvedGround(const ConvexPiece& piece, const Eigen::Isometry3d& po
   Disc discs[2];
   const int n = discsOf(piece, pose, discs);
   for (int k = 0; k < n; ++k) {
-    Eigen::Vector3d rim[4];
+    Eigen::Vector3d rim[kRimPoints];
     discPoints(discs[k], rim);
-    const int count = discs[k].radius > 0 ? 4 : 1;
+    const int count = discs[k].radius > 0 ? kRimPoints : 1;
     for (int i = 0; i < count; ++i) {
       const double z = rim[i].z();
       if (z > height_m + margin_m) continue;
       Eigen::Vector3d p = rim[i];
       p.z() = 0.5 * (z + height_m);
-      out.points.push_back({p, height_m - z, std::uint32_t(4 * k + i)});
+      out.points.push_back({p, height_m - z, std::uint32_t(kRimPoints * k + i)});
     }
   }
   narrow::reduceManifold(out.points, out.normal);

@@ -49,7 +49,7 @@
 namespace tumble {
 
 struct KeptManifold {
-  static constexpr int kMaxPoints = 4;
+  static constexpr int kMaxPoints = 8;   // as many as the reduction keeps
   bool valid = false;
   // The moving piece's pose in the reference frame when built: B in A's frame for two pieces,
   // the piece in the world for the ground.

@@ -129,8 +129,9 @@ bool supportContact(const HullView& a, const HullView& b, double margin, Contact
 double supportSeparation(const HullView& a, const HullView& b, Eigen::Vector3d& axis);
 PieceDistance supportDistance(const HullView& a, const HullView& b);
 
-// manifold_reduce.cpp: keeps at most 4 points (deepest, farthest from it, then the two that
-// enlarge the support polygon most), in that order; deterministic.
+// manifold_reduce.cpp: keeps 4 points (deepest, farthest from it, then the two that enlarge the
+// support polygon most), in that order, then up to 4 more corners where each adds a large share
+// of the polygon (faces turned against each other); deterministic.
 void reduceManifold(std::vector<ContactPoint>& points, const Eigen::Vector3d& normal);
 
 }  // namespace tumble::narrow

@@ -7,7 +7,8 @@
 //   position midway between the two surfaces.
 //   ground   the half-space z <= height is always B, the piece A: normal = (0, 0, -1).
 // The manifold is built by clipping the incident face against the reference face (face contacts)
-// or is the single closest point of two edges (edge contacts), then reduced to <= 4 points.
+// or is the single closest point of two edges (edge contacts), then reduced to 4 points (up to 8
+// where four would lose much of the support polygon: manifold_reduce.cpp).
 // Separated pieces closest at a vertex or an edge's end, whose distance (GJK) exceeds every tested
 // axis's gap, get instead one point at their closest points, along the direction between them,
 // with the true distance (ContactManifold::closest_points); pieces farther than the margin, none.
@@ -84,7 +85,7 @@ PieceDistance pieceDistance(const CollisionHull& a, const Eigen::Isometry3d& pos
 
 // The static ground z <= height_m (world z up). The piece is A, the ground B, so the normal is
 // (0, 0, -1); every vertex below height_m + margin_m is a contact with depth = height_m - z,
-// placed midway (z + height_m) / 2; then reduced to <= 4 points keeping the support polygon.
+// placed midway (z + height_m) / 2; then reduced keeping the support polygon.
 bool collideGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double height_m,
                    double margin_m, ContactManifold& out);
 std::optional<ContactManifold> collideGround(const ConvexPiece& piece,

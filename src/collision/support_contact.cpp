@@ -7,8 +7,9 @@
 // or a point. The features are projected on the plane across the normal and the smaller clipped
 // by the larger, as the SAT path clips faces (clip.cpp); each point's depth is the gap along the
 // normal between the two features there, so a can standing on a box holds its whole base, one
-// lying on its side holds its length, and a tilted one touches at its rim's lowest point. The
-// deepest point is then set to the query's depth, which back-stepping and the projection read.
+// lying on its side holds its length, and a tilted one its rim's points within the margin, from
+// the lowest (which touches first). The deepest point is then set to the query's depth, which
+// back-stepping and the projection read.
 #include <algorithm>
 #include <cmath>
 

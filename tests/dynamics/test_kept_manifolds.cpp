@@ -7,6 +7,8 @@
 #include <map>
 #include <memory>
 
+#include "collision/collision_hull.h"
+#include "collision/narrow_phase.h"
 #include "contact_scene_runner.h"
 #include "dynamics/contact_detection.h"
 
@@ -36,12 +38,21 @@ TEST_CASE("kept manifolds: through a settling pile, every pair is as deep as the
   double worst = 0, worst_t = 0;
   long compared = 0;
   ContactDetector::Work settled;   // the kept detector's counts when the pile has landed (3 s)
+  // The pieces in the detector's order (piece ids): each body's pieces in turn, planes left out.
+  struct Piece {
+    int body;
+    CollisionHull hull;
+  };
+  std::vector<Piece> pieces;
   const test::SceneRun run = test::runScene(
       "pile_time_stepping", 4.0,
       [&](const World& world) {
         if (!kept) {
           kept = std::make_unique<ContactDetector>(world);
           fresh = std::make_unique<ContactDetector>(world);
+          for (std::size_t b = 0; b < world.bodies.size(); ++b)
+            if (world.bodies[b].shape != ShapeKind::Plane)
+              for (const ConvexPiece& piece : world.bodies[b].pieces) pieces.push_back({int(b), makeCollisionHull(piece)});
         }
         if (world.time < 3.0) settled = kept->work();
         kept->detect(world, settings, kept_contacts, &kept_pairs, nullptr, true);
@@ -56,9 +67,26 @@ TEST_CASE("kept manifolds: through a settling pile, every pair is as deep as the
         // reach is in the margin beyond the base margin, contact_detection.h): a feature the kept
         // manifold leaves out may be there, and only there.
         const double cannot_touch = -(1 - ContactDetector::kReuseSlack) * settings.margin_m;
+        // A pair apart may be held against its exact distance (GJK) where the fresh narrow phase
+        // differs: the fresh phase's points on a face's border carry the clipping's error (a vertex
+        // 0.5 um past a wall's bottom edge, clipped there, read 4.7e-7 m farther than the vertex
+        // is), which the kept manifold, vertex to plane, does not. (GJK alone is no truth for the
+        // gap the narrow phase reports along a face's normal between edges apart.)
+        auto apartBy = [&](const PiecePair& p) {
+          const Piece &pa = pieces[std::size_t(p.piece_a)], &pb = pieces[std::size_t(p.piece_b)];
+          auto pose = [&](int b) {
+            Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
+            x.linear() = world.bodies[std::size_t(b)].q.toRotationMatrix();
+            x.translation() = world.bodies[std::size_t(b)].x;
+            return x;
+          };
+          return pieceDistance(pa.hull, pose(pa.body), pb.hull, pose(pb.body)).distance;
+        };
         auto compare = [&](const PiecePair& p) {
           if (depthIn(a, p) < cannot_touch && depthIn(b, p) < cannot_touch) return;
-          const double d = std::abs(depthIn(a, p) - depthIn(b, p));
+          const bool apart = depthIn(a, p) < 0 && depthIn(b, p) < 0 && p.piece_a >= 0 && p.piece_b >= 0;
+          double d = std::abs(depthIn(a, p) - depthIn(b, p));
+          if (apart && d > 0) d = std::min(d, std::abs(depthIn(a, p) + apartBy(p)));
           if (d > worst) worst = d, worst_t = world.time;
           ++compared;
         };
