@@ -1,6 +1,7 @@
-// Contact reduction: at most four points that keep the support polygon (docs/architecture.md, narrow phase).
+// Contact reduction: the points that keep the support polygon (docs/architecture.md, narrow phase).
 // The solver needs the polygon a body rests on, not every vertex of it; four points bound a
-// quadrilateral, and picking them by area keeps as much of the support as four points can.
+// quadrilateral, and picking them by area keeps as much of the support as four points can; where
+// that still loses much of it (faces turned against each other), up to four corners more.
 #include <algorithm>
 #include <array>
 #include <cmath>
