@@ -25,11 +25,12 @@ int discsOf(const ConvexPiece& piece, const Eigen::Isometry3d& pose, Disc (&disc
   return 2;
 }
 
-// A disc's lowest rim point and the seven an eighth of a turn apart from it (a regular octagon, as
-// support_contact.cpp takes a disc against a face): what of the rim can rest on the ground. A level
-// disc has no lowest point; its points are then taken from the world's x axis across the disc, so
-// that they do not turn with rounding.
-constexpr int kRimPoints = 8;
+// A disc's lowest rim point and the seven an eighth of a turn apart from it (narrow_internal.h,
+// as support_contact.cpp takes a disc against a face): what of the rim can rest on the ground. A
+// level disc has no lowest point; its points are then taken from the world's x axis across the
+// disc, so that they do not turn with rounding.
+using narrow::discRimPoint;
+constexpr int kRimPoints = narrow::kDiscRimPoints;
 
 void discPoints(const Disc& d, Eigen::Vector3d (&points)[kRimPoints]) {
   Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
@@ -40,10 +41,7 @@ void discPoints(const Disc& d, Eigen::Vector3d (&points)[kRimPoints]) {
   }
   e1.normalize();
   const Eigen::Vector3d e2 = d.axis.cross(e1);
-  for (int k = 0; k < kRimPoints; ++k) {
-    const double t = 2 * M_PI * k / kRimPoints;
-    points[k] = d.centre + d.radius * (std::cos(t) * e1 + std::sin(t) * e2);
-  }
+  for (int k = 0; k < kRimPoints; ++k) points[k] = discRimPoint(d.centre, e1, e2, d.radius, k);
 }
 
 bool collideRevolvedGround(const ConvexPiece& piece, const Eigen::Isometry3d& pose, double height_m, double margin_m,

@@ -122,6 +122,17 @@ bool roundedContact(const HullView& a, const HullView& b, double margin, Contact
 double roundedSeparation(const HullView& a, const HullView& b, Eigen::Vector3d& axis);
 PieceDistance roundedDistance(const HullView& a, const HullView& b);
 
+// The rim points a flat disc (a cylinder's end, a cone's base) is held at, against a face or the
+// ground: a regular octagon inside the circle, whose support polygon loses 1 - cos(pi/8) = 7.6 %
+// of the radius at its worst (between two points). Point k of the disc about `centre`, radius r,
+// spanned by u and v (unit, square to each other and to the axis), from u.
+constexpr int kDiscRimPoints = 8;
+inline Eigen::Vector3d discRimPoint(const Eigen::Vector3d& centre, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                                    double r, int k) {
+  const double t = 2 * M_PI * k / kDiscRimPoints;
+  return centre + r * (std::cos(t) * u + std::sin(t) * v);
+}
+
 // support_contact.cpp: pairs where either piece is a solid of revolution (a cylinder, a cone):
 // from the two support mappings (GJK and EPA, support_query.h), the contact points from the
 // features facing each other. The same three answers as the rounded pairs'.

@@ -24,9 +24,6 @@ namespace {
 // Its points then carry their own depths along the normal, so a feature tilted within it only
 // gives points deeper or shallower by their lever times the tilt, dropped beyond the margin.
 constexpr double kFeatureAngle = 1e-3;
-// Rim points per flat disc: a regular octagon inside the circle, whose support polygon loses
-// 1 - cos(pi/8) = 7.6 % of the radius at its worst (between two points).
-constexpr int kRimPoints = 8;
 
 const ConvexPiece& pieceOf(const HullView& h) { return *h.hull->piece; }
 
@@ -49,10 +46,7 @@ using Feature = std::vector<Eigen::Vector3d>;
 void discFeature(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, const Eigen::Vector3d& u, double r,
                  Feature& f) {
   const Eigen::Vector3d v = axis.cross(u);
-  for (int k = 0; k < kRimPoints; ++k) {
-    const double t = 2 * M_PI * k / kRimPoints;
-    f.push_back(centre + r * (std::cos(t) * u + std::sin(t) * v));
-  }
+  for (int k = 0; k < kDiscRimPoints; ++k) f.push_back(discRimPoint(centre, u, v, r, k));
 }
 
 Feature featureAlong(const HullView& h, const Eigen::Vector3d& dir) {

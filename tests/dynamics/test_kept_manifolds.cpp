@@ -74,13 +74,8 @@ TEST_CASE("kept manifolds: through a settling pile, every pair is as deep as the
         // gap the narrow phase reports along a face's normal between edges apart.)
         auto apartBy = [&](const PiecePair& p) {
           const Piece &pa = pieces[std::size_t(p.piece_a)], &pb = pieces[std::size_t(p.piece_b)];
-          auto pose = [&](int b) {
-            Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
-            x.linear() = world.bodies[std::size_t(b)].q.toRotationMatrix();
-            x.translation() = world.bodies[std::size_t(b)].x;
-            return x;
-          };
-          return pieceDistance(pa.hull, pose(pa.body), pb.hull, pose(pb.body)).distance;
+          const RigidBody &ba = world.bodies[std::size_t(pa.body)], &bb = world.bodies[std::size_t(pb.body)];
+          return pieceDistance(pa.hull, poseOf(ba), pb.hull, poseOf(bb)).distance;
         };
         auto compare = [&](const PiecePair& p) {
           if (depthIn(a, p) < cannot_touch && depthIn(b, p) < cannot_touch) return;
