@@ -1,6 +1,7 @@
 #include "dynamics/time_stepping/speculative_contacts.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "collision/first_touch.h"
 #include "collision/narrow_phase.h"
@@ -9,6 +10,11 @@
 namespace tumble {
 
 namespace {
+
+// The largest turn (rad) between the instants at which a swept pair's overlap is looked for, and
+// the most instants in a step: a piece turning 0.26 rad in a step is looked at every 0.05 rad.
+constexpr double kSweptSampleTurn = 0.05;
+constexpr int kMaxSweptSamples = 16;
 
 FreeMotion freeMotion(const World& world, const RigidBody& body, double dt, bool gravity) {
   FreeMotion m;
@@ -90,24 +96,52 @@ long addSweptContacts(const World& world, const ContactDetector& detector, std::
     const FreeMotion mb = freeMotion(world, world.bodies[first.b], dt, gravity);
     SatCache cache;
     thread_local ContactManifold m;
-    if (!collide(ha, ma.at(dt), hb, mb.at(dt), 0.0, cache, m)) return;
-    for (const ContactPoint& p : m.points) {
-      if (p.depth <= tolerance) continue;
-      const Eigen::Vector3d pa = backToStart(ma, dt, p.position + 0.5 * p.depth * m.normal);
-      const Eigen::Vector3d pb = backToStart(mb, dt, p.position - 0.5 * p.depth * m.normal);
-      const double gap = m.normal.dot(pb - pa);
-      if (gap <= tolerance) continue;
-      const Eigen::Vector3d at = 0.5 * (pa + pb);
-      bool known = false;
-      for (std::size_t k = i; k < found && pairs[k] == pair; ++k)
-        known = known || (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
-      if (known) continue;
-      Contact c = first;
-      c.point = at;
-      c.normal = m.normal;
-      c.depth = -gap;
-      c.closest_points = false;
-      swept[job].push_back(c);
+    // The pair where its free motion has taken it at time t; each point deeper than the tolerance,
+    // carried back to the start, becomes a contact unless the pair holds one near it. Returns
+    // whether a point was deep but lies behind the normal found at t (below).
+    auto collideAt = [&](double t) {
+      bool behind = false;
+      const std::size_t earlier = swept[job].size();   // from another instant: not to be repeated
+      if (!collide(ha, ma.at(t), hb, mb.at(t), 0.0, cache, m)) return behind;
+      for (const ContactPoint& p : m.points) {
+        if (p.depth <= tolerance) continue;
+        const Eigen::Vector3d pa = backToStart(ma, t, p.position + 0.5 * p.depth * m.normal);
+        const Eigen::Vector3d pb = backToStart(mb, t, p.position - 0.5 * p.depth * m.normal);
+        const double gap = m.normal.dot(pb - pa);
+        if (gap <= tolerance) {
+          behind = true;
+          continue;
+        }
+        const Eigen::Vector3d at = 0.5 * (pa + pb);
+        bool known = false;
+        for (std::size_t k = i; k < found && pairs[k] == pair; ++k)
+          known = known || (contacts[k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
+        for (std::size_t k = 0; k < earlier; ++k)
+          known = known || (swept[job][k].point - at).norm() < 0.05 * std::min(ha.size, hb.size);
+        if (known) continue;
+        Contact c = first;
+        c.point = at;
+        c.normal = m.normal;
+        c.depth = -gap;
+        c.closest_points = false;
+        swept[job].push_back(c);
+      }
+      return behind;
+    };
+    // Where the pieces end the step deep in each other, the separating direction there need not be
+    // the one they came in along: a shard spinning at 60 rad/s swings a corner 15 degrees into its
+    // neighbour, and the overlap at the end is shallowest straight up, behind which the corner
+    // started. A row along it would ask the corner to jump back 4 cm in one step, and none is
+    // made. The overlap is then looked for at earlier instants of the motion, each a turn of at
+    // most kSweptSampleTurn after the last, and the first instant that shows one gives the rows:
+    // there the pieces have only just met, along the direction they meet in.
+    if (!collideAt(dt)) return;
+    const double turn = (ma.spin - mb.spin).norm() * dt;
+    const int samples = std::clamp(static_cast<int>(std::ceil(turn / kSweptSampleTurn)), 2, kMaxSweptSamples);
+    for (int k = 1; k < samples; ++k) {
+      const std::size_t before = swept[job].size();
+      const bool behind = collideAt(dt * k / samples);
+      if (swept[job].size() > before || behind) break;
     }
   });
   long added = 0;
