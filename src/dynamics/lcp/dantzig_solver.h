@@ -36,6 +36,10 @@ struct DantzigSettings {
   // A pass after the first starts from the last pass's clamped set (BoxedPivoting::seed) instead
   // of driving every variable from zero again; off only to measure what that saves.
   bool seed_friction_passes = true;
+  // An answer is reported LcpStatus::Solved only if its residuals, recomputed from A f + b, are
+  // within this share of the size of its terms (|b| + |A| |f| + |f|); otherwise MaxIterations. A
+  // solved answer's are at rounding (about 1e-13 of it, consistency_tolerance at most).
+  double solved_tolerance = 1e-6;
 };
 
 // Solves p; lo ≤ 0 ≤ hi is not required (a variable starts at the bound nearest 0). A must be
