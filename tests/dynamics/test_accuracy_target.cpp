@@ -45,15 +45,16 @@ std::vector<double> finalState(const std::string& scene_name, const AccuracyTarg
 }  // namespace
 
 TEST_CASE("accuracy target: auto refines the pile's steps until no step ends deeper than the target", "[target]") {
-  // Without a target the landing pile, run at 1/120 s, ends steps 0.16 mm deep (time stepping, its
-  // drift projection at each step's end taking out what is deeper than 0.1 mm): the target below is
-  // not met by the scene's step alone, and the refinement must act (checked below by what it says).
-  // The margin asked of the loose run was 2x the target while it ended 0.32 mm deep (then 0.21
-  // mm); each better contact stage lowers it, and 1.25x still leaves a quarter of the target
-  // between a run that needs refining and one that does not.
+  // Without a target the landing pile, run at 1/120 s, ends steps 0.11 mm deep (time stepping, its
+  // drift projection at each step's end taking out what is deeper than 0.1 mm, so the end depth
+  // stays near that whatever the landing): the target below is not met by the scene's step alone,
+  // and the refinement must act (checked below by what it says). A margin of 2x the target was
+  // asked while the pile ended 0.32 mm deep; better contact stages brought it to 0.21, 0.16 and
+  // 0.11 mm, and no drop height gives 0.2 mm (1 m higher: 0.16 mm).
   constexpr double kTarget = 1e-4, kStep = 1.0 / 120;
   auto loose = runScene("pile", 1.0, {}, 1, withTarget(0, 0, kStep));
-  REQUIRE(loose.max_penetration > 1.25 * kTarget);
+  INFO("without a target the pile ends steps " << loose.max_penetration << " m deep");
+  REQUIRE(loose.max_penetration > kTarget);
   auto held = runScene("pile", 1.0, {}, 1, withTarget(kTarget, 0, kStep));
   // Measured here geometrically (SAT over every pair of pieces), independently of the narrow
   // phase the refinement measures by: the two find the same deepest axis, up to the SAT's face

@@ -11,7 +11,7 @@ StepSettings crowdSettings(const StepSettings& scene) {
   StepSettings s = scene;
   s.model = ContactModel::TimeStepping;
   s.time_stepping_sweeps = kAutoCrowdSweeps;
-  s.contact.max_direct_rows = 0;
+  s.contact.max_direct_rows = kAutoCrowdPivotRows;
   return s;
 }
 

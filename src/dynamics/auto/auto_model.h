@@ -45,9 +45,14 @@ namespace tumble {
 // Moving bodies that start free (touching nothing within the contact margin) at or above which
 // the scene is a crowd of landings. A clip of a few bodies, a stack or a wall has a handful.
 inline constexpr int kAutoCrowd = 20;
-// The time-stepping setting auto uses for a crowd: Gauss-Seidel sweeps per step at most, every
-// island by Gauss-Seidel alone (as Bullet and ODE's quickstep): the benchmark's fastest setting.
+// The time-stepping setting auto uses for a crowd: Gauss-Seidel sweeps per step at most, islands
+// by Gauss-Seidel alone (as Bullet and ODE's quickstep) but for the few below.
 inline constexpr int kAutoCrowdSweeps = 10;
+// Rows up to which an island of unequal masses the crowd's sweeps leave unconverged is pivoted
+// exactly (a heavy shard on a light one on the ground: time_stepping/contact_impulses.h,
+// kSweepsMassRatio), and up to which an island's drift is projected by pivoting; larger islands
+// (a pile's) keep the sweeps' answers.
+inline constexpr int kAutoCrowdPivotRows = 60;
 
 class AutoModel final : public ContactModelStep {
  public:

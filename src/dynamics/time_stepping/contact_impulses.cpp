@@ -29,6 +29,19 @@ struct IslandScratch {
 // (rounding: a perfectly elastic bounce keeps it to about 1e-15).
 constexpr double kBounceEnergySlack = 1e-9;
 
+// Heaviest over lightest moving body of an island (kSweepsMassRatio).
+double massRatio(const World& world, std::span<const Contact* const> island) {
+  double lightest = INFINITY, heaviest = 0;
+  for (const Contact* c : island)
+    for (int k : {c->a, c->b}) {
+      const RigidBody& body = world.bodies[k];
+      if (body.is_static) continue;
+      lightest = std::min(lightest, body.mass);
+      heaviest = std::max(heaviest, body.mass);
+    }
+  return heaviest > 0 ? heaviest / lightest : 1;
+}
+
 double kineticEnergyOf(const World& world) {
   double e = 0;
   for (const RigidBody& b : world.bodies)
@@ -156,11 +169,13 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
       IslandImpulseSettings gs;
       gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
                             : settings.time_stepping_sweeps;
-      gs.tolerance = small ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
+      // A speed setting pivots only the small islands its sweeps leave unconverged at the usual
+      // tolerance (a mass ratio the sweeps cannot settle), not every flat landing.
+      gs.tolerance = small && !isSpeedSetting(settings) ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
       gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
       gs.gravity_dt = dt;
       const bool converged = solveIslandImpulsesInPlace(world, rows, island, b, f, gs, own);
-      if (!converged && small) {
+      if (!converged && small && (!isSpeedSetting(settings) || massRatio(world, island) >= kSweepsMassRatio)) {
         ContactLcp& exact = scratch.exact;
         buildContactLcp(world, island, exact);   // the same rows
         exact.problem.b = b;

@@ -5,6 +5,7 @@
 #include "dynamics/joints/joint_impulses.h"
 #include "dynamics/joints/joint_projection.h"
 #include "dynamics/joints/joint_summary.h"
+#include "dynamics/time_stepping/contact_impulses.h"
 #include "dynamics/time_stepping/outrun_contacts.h"
 #include "dynamics/time_stepping/speculative_contacts.h"
 
@@ -104,9 +105,11 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
   if (shared.has_contacts)
     lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
                     "warm-started Gauss-Seidel, at most " + std::to_string(settings.time_stepping_sweeps) +
-                    " sweeps; " + (settings.contact.max_direct_rows > 0
-                                       ? "small islands it leaves unconverged pivoted exactly"
-                                       : "every island by Gauss-Seidel alone"));
+                    " sweeps; " + (settings.contact.max_direct_rows == 0 ? "every island by Gauss-Seidel alone"
+                                   : isSpeedSetting(settings)
+                                       ? "small islands of bodies " + std::to_string(static_cast<int>(kSweepsMassRatio)) +
+                                             ":1 or more apart in mass it leaves unconverged pivoted exactly"
+                                       : "small islands it leaves unconverged pivoted exactly"));
   if (!joints_line_.empty()) lines.push_back(joints_line_);
   lines.push_back(shared.integrateLine(settings) + " (free motion with the new momenta)");
   if (shared.has_contacts) {
