@@ -37,7 +37,10 @@ long keepReachableContacts(const World& world, const ContactDetector& detector, 
 // step: a spike toppling off a ridge swings a base corner onto it. Each such pair is also
 // collided where its free motion ends the step; a point found there deeper than `tolerance`, apart
 // at the start by more than it and not near a contact the pair has, becomes a speculative contact
-// of its own (carried back to the start, along the normal found at the end). Returns how many.
+// of its own (carried back to the start, along the normal found at the end). Where a point found
+// there lies behind that normal at the start (the corner came in across it), the pair is collided
+// at earlier instants of the motion instead, and the first that shows an overlap gives the
+// contacts. Returns how many.
 // `spin`: each body's angular velocity now (bodySpins).
 // The pairs are collided on `threads` threads; what is added, and its order, does not depend on it.
 long addSweptContacts(const World& world, const ContactDetector& detector, std::vector<Contact>& contacts,
