@@ -57,10 +57,8 @@ void finish(const LcpProblem& p, const DantzigSettings& s, LcpResult& r) {
   // bottom block and the correction lifted the tower by 15 J. An answer is solved only if A f + b
   // says so.
   if (r.status == LcpStatus::Solved) {
-    double terms = 0;   // the largest |A| |f| of a row, by rows: no temporary
-    for (Eigen::Index i = 0; i < p.A.rows(); ++i) terms = std::max(terms, p.A.row(i).cwiseAbs().dot(r.f.cwiseAbs()));
-    const double scale = p.b.lpNorm<Eigen::Infinity>() + terms + r.f.lpNorm<Eigen::Infinity>();
-    if (!(std::max(r.residual.complementarity, r.residual.bounds) <= s.solved_tolerance * scale))
+    const double tol = s.solved_tolerance * termScale(p, r.f);
+    if (!(std::max(r.residual.complementarity, r.residual.bounds) <= tol))
       r.status = LcpStatus::MaxIterations;
   }
 }

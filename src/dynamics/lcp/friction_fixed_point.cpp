@@ -67,8 +67,7 @@ std::optional<Eigen::VectorXd> solveFrictionFixedPoint(const LcpProblem& p, cons
     if (follows[j] >= 0) f[j] = slope[j] * f[follows[j]];
   if (!f.allFinite()) return std::nullopt;
   const Eigen::VectorXd w = p.A * f + p.b;
-  const double scale = p.b.lpNorm<Eigen::Infinity>() + (p.A.cwiseAbs() * f.cwiseAbs()).maxCoeff() +
-                       f.lpNorm<Eigen::Infinity>();
+  const double scale = termScale(p, f);
   const LcpResidual res = measureResidual(p, f, w);
   const double tol = tolerance * scale + 1e-300;
   if (res.bounds > tol || res.complementarity > tol) return std::nullopt;

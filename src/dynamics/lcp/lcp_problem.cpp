@@ -53,6 +53,12 @@ LcpResidual measureResidual(const LcpProblem& p, const Eigen::VectorXd& f, const
   return r;
 }
 
+double termScale(const LcpProblem& p, const Eigen::VectorXd& f) {
+  double terms = 0;   // by rows: no temporary vector
+  for (Eigen::Index i = 0; i < p.A.rows(); ++i) terms = std::max(terms, p.A.row(i).cwiseAbs().dot(f.cwiseAbs()));
+  return p.b.lpNorm<Eigen::Infinity>() + terms + f.lpNorm<Eigen::Infinity>();
+}
+
 const char* validate(const LcpProblem& p) {
   const Eigen::Index n = p.b.size();
   if (p.A.rows() != n || p.A.cols() != n) return "A is not n×n with n = size of b";

@@ -64,6 +64,10 @@ void effectiveBounds(const LcpProblem& p, const Eigen::VectorXd& f, Eigen::Vecto
 // Friction bounds are evaluated at the normal forces in f.
 LcpResidual measureResidual(const LcpProblem& p, const Eigen::VectorXd& f, const Eigen::VectorXd& w);
 
+// The size of the terms a candidate's residuals are judged against: |b| + max_i sum_k |A_ik f_k| +
+// |f| (max norms), what cancels in w = A f + b. Allocates nothing.
+double termScale(const LcpProblem& p, const Eigen::VectorXd& f);
+
 // Checks sizes, finiteness of A and b, lo ≤ hi and friction indices. Returns an empty string when valid.
 const char* validate(const LcpProblem& p);
 
