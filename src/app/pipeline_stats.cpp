@@ -15,9 +15,10 @@ void printPipelineStats(const Pipeline& pipeline) {
   std::fprintf(stderr,
                "  sub-steps %ld, back-steps %ld (%ld evaluations), projections %ld (%ld past a body's reach, "
                "not made), unresolved %ld, impacts too deep to go back for %ld, contact work taken back %ld, "
-               "steps solved again for a body sent past its reach %ld\n",
+               "steps solved again for a body sent past its reach %ld, steps taken again in halves for a body "
+               "moved farther than its speeds explain %ld\n",
                c.substeps, c.back_steps, c.bisection_evaluations, c.projections, c.capped_projections,
-               c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid, c.resolved_for_outrun);
+               c.stuck_substeps, c.inconsistent_pairs, c.contact_work_paid, c.resolved_for_outrun, c.split_steps);
   std::fprintf(stderr,
                "  contacts: colliding %ld, resting %ld, LCP pivots %ld, LCP failures %ld (%ld more settled by "
                "complementary pivoting), dynamic-friction fallbacks %ld, impacts grown by their neighbours %ld\n",

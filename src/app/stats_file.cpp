@@ -30,6 +30,7 @@ nlohmann::json simulationStats(const Simulator& simulator, const SimulationPlan&
         {"projections", c.projections}, {"capped_projections", c.capped_projections},
         {"stuck_substeps", c.stuck_substeps}, {"inconsistent_pairs", c.inconsistent_pairs},
         {"contact_work_paid", c.contact_work_paid}, {"resolved_for_outrun", c.resolved_for_outrun},
+        {"split_steps", c.split_steps},
         {"bodies_integrated", c.bodies_integrated}}},
       {"contacts",
        {{"colliding", k.colliding}, {"resting", k.resting}, {"lcp_pivots", k.pivots}, {"lcp_failures", k.failures},

@@ -18,6 +18,10 @@ MotionCheck::State MotionCheck::stateOf(const RigidBody& body) {
   return {body.x, body.velocity(), body.angularVelocity(), body.q};
 }
 
+void MotionCheck::remember(const World& world) {
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) last_[i] = stateOf(world.bodies[i]);
+}
+
 std::optional<UnexplainedMotion> MotionCheck::afterStep(const World& world, double dt,
                                                         const std::vector<double>& peak_speed,
                                                         const std::vector<double>& peak_spin) {

@@ -28,6 +28,8 @@ class MotionCheck {
   // The position correction may move a body within one step by `depth_share` of its thinnest
   // piece (the deepest overlap the fault check lets pass).
   MotionCheck(const World& world, const std::vector<BodyExtent>& extents, double depth_share);
+  // Takes `world` as the next step's start (a step taken back and begun again).
+  void remember(const World& world);
   // The body whose points moved farthest beyond what its speeds allow over the step of `dt`
   // seconds that led to `world`, if any; then remembers `world` as the next step's start.
   // `peak_speed` and `peak_spin` (per body, or empty) are the largest speeds a model moved each

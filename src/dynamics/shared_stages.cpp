@@ -40,4 +40,13 @@ std::string SharedStages::integrateLine(const StepSettings& settings) const {
          " static never integrated";
 }
 
+void SharedStages::notePeakSpeeds(const World& world) {
+  for (std::size_t k = 0; k < world.bodies.size() && k < peak_speed.size(); ++k) {
+    const RigidBody& body = world.bodies[k];
+    if (body.is_static) continue;
+    peak_speed[k] = std::max(peak_speed[k], body.velocity().norm());
+    peak_spin[k] = std::max(peak_spin[k], body.angularVelocity().norm());
+  }
+}
+
 }  // namespace tumble

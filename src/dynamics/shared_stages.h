@@ -35,6 +35,7 @@ struct PipelineCounters {
   long contact_work_paid = 0;    // sub-steps whose contact forces did positive work, taken back
   long inconsistent_pairs = 0;   // impacts already too deep at the start (projected, not bisected)
   long resolved_for_outrun = 0;  // time stepping: steps solved again, a body sent past its reach (outrun_contacts.h)
+  long split_steps = 0;          // time stepping: steps taken again as two halves (step_split.h)
   ContactSolveStats contacts;
   std::vector<double> impact_times;   // s: the first 1000 times at which impulses were applied
   std::string model_choice;           // what the automatic model chose and why (empty otherwise)
@@ -89,6 +90,8 @@ struct SharedStages {
   // may move a body faster between two of a step's impacts than at either end of the step. Reset by
   // the pipeline before each step; a model without sub-steps leaves them at zero.
   std::vector<double> peak_speed, peak_spin;
+  // Raises peak_speed and peak_spin to the speeds each moving body has now.
+  void notePeakSpeeds(const World& world);
   SleepKeeper sleep;
 
   std::vector<Contact> contacts;     // the world's contacts now (for overlays and the fault check)

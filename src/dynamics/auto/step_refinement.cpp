@@ -11,9 +11,7 @@ void StepRefinement::step(World& world, const StepSettings& settings, SharedStag
   const double start = world.time;
   StepSettings sub = settings;
   for (;;) {
-    snapshot_.save(world);
-    const std::size_t logged = shared.impact_log ? shared.impact_log->size() : 0;
-    const std::size_t stepped_back = shared.back_step_log ? shared.back_step_log->added() : 0;
+    attempt_.begin(world, shared);
     sub.dt = settings.dt / level_;
     for (int i = 0; i < level_; ++i) {
       world.time = start + i * sub.dt;
@@ -29,10 +27,7 @@ void StepRefinement::step(World& world, const StepSettings& settings, SharedStag
       }
       break;
     }
-    snapshot_.restore(world);
-    shared.contacts_fresh = false;   // the model's contacts were of the attempt's end
-    if (shared.impact_log) shared.impact_log->resize(logged);   // the attempt's impacts never happened
-    if (shared.back_step_log) shared.back_step_log->rollback(stepped_back);   // nor its back-steps
+    attempt_.takeBack(world, shared);
     ++counters_.retaken_steps;
     level_ *= 2;
     calm_ = 0;

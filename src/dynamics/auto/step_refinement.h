@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/body_snapshot.h"
 #include "dynamics/contact_detection.h"
 #include "dynamics/contact_model.h"
+#include "dynamics/step_attempt.h"
 
 namespace tumble {
 
@@ -52,7 +52,7 @@ class StepRefinement {
  private:
   double target_m_;
   ContactDetector detector_;
-  BodySnapshot snapshot_;
+  StepAttempt attempt_;
   int level_ = 1, calm_ = 0;
   Counters counters_;
 };

@@ -86,12 +86,7 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   const bool bound_work = shared.has_contacts && world.joints.empty();
   if (bound_work) work_bound_.before(world, shared.contacts, settings.contact.tolerance_m, shared.extents);
   // The speeds this sub-step moves the bodies at (the fault check's bound on a step's motion).
-  for (std::size_t k = 0; k < world.bodies.size() && k < shared.peak_speed.size(); ++k) {
-    const RigidBody& body = world.bodies[k];
-    if (body.is_static) continue;
-    shared.peak_speed[k] = std::max(shared.peak_speed[k], body.velocity().norm());
-    shared.peak_spin[k] = std::max(shared.peak_spin[k], body.angularVelocity().norm());
-  }
+  shared.notePeakSpeeds(world);
   shared.timed(Integrate, [&] { shared.counters.bodies_integrated += integrate(world, shared.wrenches, sub); });
   if (!shared.has_contacts) {
     correctJoints(world, shared);

@@ -12,6 +12,15 @@
 namespace tumble {
 
 void TimeSteppingModel::step(World& world, const StepSettings& settings, SharedStages& shared) {
+  if (!shared.has_contacts) {
+    stepOnce(world, settings, shared);
+    return;
+  }
+  // A step whose motion its rows could not hold is taken again in halves (step_split.h).
+  split_.step(world, settings, shared, [&](const StepSettings& s) { stepOnce(world, s, shared); });
+}
+
+void TimeSteppingModel::stepOnce(World& world, const StepSettings& settings, SharedStages& shared) {
   last_dt_ = settings.dt;
   ++shared.counters.substeps;
   const double dt = settings.dt;
@@ -91,7 +100,8 @@ void TimeSteppingModel::detectAndCorrect(World& world, const StepSettings& setti
   });
 }
 
-void TimeSteppingModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& /*shared*/) {
+void TimeSteppingModel::start(const World& world, const StepSettings& /*settings*/, SharedStages& shared) {
+  split_.start(world, shared.extents);
   if (!world.joints.empty())
     joints_line_ = "joints      " + describeJoints(world) +
                    ": velocity-level impulses in one pivoted problem with the contacts' (equality rows, limits "

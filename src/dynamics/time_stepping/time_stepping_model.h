@@ -11,6 +11,8 @@
 //   detect      contacts within each body's reach (a speculative margin)   shared_stages.h
 //   correct     project out residual penetration                          drift_projection.h
 //   joints      their position drift projected out                         joints/joint_projection.h
+//   (split)     a step that moved a body farther than its speeds explain,  step_split.h
+//               taken back and run again as two halves
 //
 // The step's contacts are the ones the last step ended with; the first step, and one after
 // anything changed the bodies between steps (sleep, a step taken back, the joints' projection) or
@@ -35,6 +37,7 @@
 #include "dynamics/time_stepping/contact_impulses.h"
 #include "dynamics/time_stepping/drift_projection.h"
 #include "dynamics/time_stepping/outrun_contacts.h"
+#include "dynamics/time_stepping/step_split.h"
 
 namespace tumble {
 
@@ -46,6 +49,8 @@ class TimeSteppingModel final : public ContactModelStep {
   StepImpulses lastImpulses() const override { return {&impulses_.memory(), last_dt_}; }
 
  private:
+  // One step of settings.dt, never split.
+  void stepOnce(World& world, const StepSettings& settings, SharedStages& shared);
   // Detection (with waking the sleepers it finds touched) and the drift projection.
   void detectAndCorrect(World& world, const StepSettings& settings, SharedStages& shared);
 
@@ -61,6 +66,7 @@ class TimeSteppingModel final : public ContactModelStep {
   std::vector<Contact> outrun_;    // the step's contacts with those
   BodySnapshot end_state_;         // the state the last step ended in, its contacts detected
   double detected_dt_ = 0;         // s: the step length those contacts were detected for
+  StepSplit split_;
 };
 
 }  // namespace tumble
