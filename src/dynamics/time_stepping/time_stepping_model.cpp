@@ -131,6 +131,9 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
                               std::to_string(static_cast<int>(tuning::kProjectionDeepFactor)) +
                               " times the contact tolerance (a speed setting), at the end of each step"
                         : "correct     position projection of residual penetration, at the end of each step");
+    lines.push_back("split       a step that moved a body farther than its speeds explain (by a quarter of its "
+                    "thinnest piece) taken again as two halves, down to 1/" +
+                    std::to_string(1 << kMaxSplitDepth) + " of the step");
   }
   if (!shared.has_contacts) lines.push_back("contacts    none needed: nothing in this scene can touch");
   return lines;
