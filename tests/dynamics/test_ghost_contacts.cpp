@@ -9,7 +9,8 @@
 // Every step is checked by the run-time fault check (a body moved farther than its speeds allow,
 // energy risen above the lowest it reached, deep overlap: each stops the run, so the run itself
 // must not throw), and the overlap of every pair is measured exactly by the separating-axis test
-// after every step; the bound, 1 mm, is the acceptance bound for overlaps.
+// after every step; the bound, 1 mm, is the acceptance bound for overlaps. The total energy may not
+// rise above the lowest it has reached by more than 1e-6 of the scene's energy scale.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -33,6 +34,10 @@ struct Watched {
 };
 
 constexpr double kOverlapBound = 1e-3;   // m, the acceptance bound for overlaps
+// A passive scene may not gain energy: its total may rise above the lowest it has reached by at
+// most this share of its energy scale (the largest kinetic energy plus the range of potential
+// energy), rounding's room and no more.
+constexpr double kEnergyRiseBound = 1e-6;
 
 // Runs scenes/hard/NAME.json with `model`, measuring every step; `body` is the moving body whose
 // end state is reported.
@@ -59,6 +64,7 @@ Watched watch(const std::string& name, ContactModel model, double seconds, const
             << "measured every step included)");
   CHECK(w.deepest < kOverlapBound);
   CHECK(w.steps_over == 0);
+  CHECK(w.largest_rise < kEnergyRiseBound);
   return w;
 }
 

@@ -141,3 +141,24 @@ TEST_CASE("arch of 101 voussoirs, Baraff: once settled, every resting solve conv
   INFO("solves stopped at their cap: " << settled << " in the first 2.5 s, " << later - settled << " from 2.5 s to 4 s");
   CHECK(later - settled == 0);
 }
+
+// The class's energy criterion: a passive scene's total energy may not rise above the lowest it has
+// reached by more than 1e-6 of its energy scale (the largest kinetic energy plus the range of
+// potential energy). The ring settles into overlaps as its 0.1 mm joints close, and the position
+// correction lifts it back out over the next steps, returning potential energy the settling took
+// (docs/known-limits.md, "Energy regained after settling"); the run-time check allows 1e-3 of the
+// scale plus a 0.1 mm lift of every stone. Known failures, with the figure reached over 2 s
+// (2026-11-29).
+TEST_CASE("arch of 25 voussoirs, time stepping: energy never rises above its lowest by 1e-6 of the scale (known failure: 0.072)",
+          "[hard][arch][energy][time_stepping][!shouldfail]") {
+  const ArchOutcome out = standArch("hard/arch25", 2, ContactModel::TimeStepping);
+  INFO("largest energy rise " << out.energy_rise << " of the scale");
+  CHECK(out.energy_rise < 1e-6);
+}
+
+TEST_CASE("arch of 25 voussoirs, Baraff: energy never rises above its lowest by 1e-6 of the scale (known failure: 0.0031)",
+          "[hard][arch][energy][!shouldfail]") {
+  const ArchOutcome out = standArch("hard/arch25", 2, ContactModel::Baraff);
+  INFO("largest energy rise " << out.energy_rise << " of the scale");
+  CHECK(out.energy_rise < 1e-6);
+}

@@ -17,11 +17,13 @@ using namespace tumble;
 namespace {
 
 // The largest distance (m) either cube's centre moves from where it was at 1 s.
-double drift(ContactModel model, double* penetration) {
+double drift(ContactModel model, double* penetration, double* energy_rise) {
   Eigen::Vector3d settled[2];
   bool have = false;
   double worst = 0;
+  test::EnergyRise energy;
   auto run = test::runScene("hard/frictionless_stack", 10, [&](const World& w) {
+    energy.add(w);
     if (w.time < 1 - 1e-9) return;
     for (int k = 0; k < 2; ++k) {
       const Eigen::Vector3d x = w.bodies[static_cast<std::size_t>(k + 1)].x;
@@ -31,15 +33,18 @@ double drift(ContactModel model, double* penetration) {
     have = true;
   }, 1, [&](Scene& s) { s.simulation.step.model = model; });
   *penetration = run.max_penetration;
+  *energy_rise = energy.largest();
   return worst;
 }
 
 void checkStaysStacked(ContactModel model) {
-  double penetration = 0;
-  const double d = drift(model, &penetration);
-  INFO("largest drift " << d << " m, deepest overlap " << penetration << " m");
+  double penetration = 0, rise = 0;
+  const double d = drift(model, &penetration, &rise);
+  INFO("largest drift " << d << " m, deepest overlap " << penetration << " m, largest energy rise " << rise
+                        << " of the scale");
   CHECK(d < 0.01);
   CHECK(penetration < 1e-3);
+  CHECK(rise < 1e-6);
 }
 
 }  // namespace
