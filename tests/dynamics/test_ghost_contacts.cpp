@@ -34,10 +34,6 @@ struct Watched {
 };
 
 constexpr double kOverlapBound = 1e-3;   // m, the acceptance bound for overlaps
-// A passive scene may not gain energy: its total may rise above the lowest it has reached by at
-// most this share of its energy scale (the largest kinetic energy plus the range of potential
-// energy), rounding's room and no more.
-constexpr double kEnergyRiseBound = 1e-6;
 
 // Runs scenes/hard/NAME.json with `model`, measuring every step; `body` is the moving body whose
 // end state is reported.
@@ -64,7 +60,7 @@ Watched watch(const std::string& name, ContactModel model, double seconds, const
             << "measured every step included)");
   CHECK(w.deepest < kOverlapBound);
   CHECK(w.steps_over == 0);
-  CHECK(w.largest_rise < kEnergyRiseBound);
+  CHECK(w.largest_rise < test::kEnergyRiseBound);
   return w;
 }
 

@@ -13,19 +13,13 @@ using tumble::test::runScene;
 
 namespace {
 
-// A passive scene may not gain energy: its total may rise above the lowest it has reached by at
-// most this share of its energy scale (the largest kinetic energy plus the range of potential
-// energy), rounding's room and no more. The run-time check allows far more (1e-3 of the scale plus
-// a 0.1 mm lift of every body, energy_check.h); this is the class's own criterion.
-constexpr double kEnergyRiseBound = 1e-6;
-
 void dropSpike(ContactModel model) {
   test::EnergyRise energy;
   auto run = runScene("hard/spike_in_crack", 2, [&](const World& w) { energy.add(w); }, 1,
                       [&](Scene& s) { s.simulation.step.model = model; });
   INFO("deepest overlap " << run.max_penetration << " m, largest energy rise " << energy.largest() << " of the scale");
   CHECK(run.max_penetration < 1e-3);
-  CHECK(energy.largest() < kEnergyRiseBound);
+  CHECK(energy.largest() < test::kEnergyRiseBound);
 }
 
 }  // namespace

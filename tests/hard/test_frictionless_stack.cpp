@@ -44,7 +44,7 @@ void checkStaysStacked(ContactModel model) {
                         << " of the scale");
   CHECK(d < 0.01);
   CHECK(penetration < 1e-3);
-  CHECK(rise < 1e-6);
+  CHECK(rise < test::kEnergyRiseBound);
 }
 
 }  // namespace
