@@ -206,7 +206,7 @@ Eigen::Vector3d collided(const Strike& s, RestitutionLaw law) {
   detector.detect(built.world, built.step.contact, contacts);
   REQUIRE(contacts.size() == 1);
   ContactSolveStats stats;
-  REQUIRE(resolveCollisions(built.world, contacts, built.step.contact, 2 * 9.81 * built.step.dt, built.step.dt, stats));
+  REQUIRE(resolveCollisions(built.world, contacts, built.step.contact, minBounceSpeed(built.world, built.step.contact, built.step.dt), built.step.dt, stats));
   const Eigen::Vector3d normal_axis = frameOf(s).normal;
   CHECK(std::abs(built.world.bodies[1].velocity().dot(normal_axis)) <= 1e-12);   // stays in its plane
   return planarMotion(built.world.bodies[1], s);
@@ -326,7 +326,7 @@ TEST_CASE("restitution laws: without friction all three give Newton's answer", "
       detector.detect(built.world, built.step.contact, contacts);
       REQUIRE(contacts.size() == 4);
       ContactSolveStats stats;
-      resolveCollisions(built.world, contacts, built.step.contact, 2 * 9.81 * built.step.dt, built.step.dt, stats);
+      resolveCollisions(built.world, contacts, built.step.contact, minBounceSpeed(built.world, built.step.contact, built.step.dt), built.step.dt, stats);
       return std::make_pair(cube.velocity(), cube.angularVelocity());
     };
     const auto newton = land(RestitutionLaw::Newton);

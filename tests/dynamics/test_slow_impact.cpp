@@ -42,8 +42,7 @@ Landing land(double speed) {
   Landing out;
   out.energy_before = cube.kineticEnergy();
   ContactSolveStats stats;
-  const double min_bounce = 2 * 9.81 / 240;
-  resolveCollisions(world, contacts, settings, min_bounce, 1.0 / 240, stats);
+  resolveCollisions(world, contacts, settings, minBounceSpeed(world, settings, 1.0 / 240), 1.0 / 240, stats);
   out.energy_after = cube.kineticEnergy();
   out.landing_vn = -INFINITY;
   out.resting_vn = -INFINITY;

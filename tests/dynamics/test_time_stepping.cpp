@@ -233,7 +233,8 @@ TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short
   c.restitution = 0.5;
   ContactImpulses impulses;
   ContactSolveStats stats;
-  const double g_dt = 9.81 * settings.dt, min_bounce = 2 * g_dt;
+  const double g_dt = 9.81 * settings.dt;
+  const BounceThreshold min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // 2 g dt here
   auto stepWith = [&](double depth, double vz, double approach) {
     cube.P = cube.mass * Eigen::Vector3d(0, 0, vz);
     cube.L.setZero();

@@ -129,7 +129,7 @@ void checkImpactEnergy(RestitutionLaw law) {
     detector.detect(world, settings, contacts);
     double before = hard::kineticEnergy(world);
     ContactSolveStats stats;
-    if (!resolveCollisions(world, contacts, settings, settings.resting_speed_m_s, 1.0 / 240, stats)) continue;
+    if (!resolveCollisions(world, contacts, settings, BounceThreshold{settings.resting_speed_m_s}, 1.0 / 240, stats)) continue;
     ++impacts;
     bool pair = false;
     for (const Contact& c : contacts) pair |= !world.bodies[c.b].is_static;

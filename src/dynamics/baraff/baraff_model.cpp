@@ -44,7 +44,7 @@ double BaraffModel::substep(World& world, const StepSettings& settings, SharedSt
   if (shared.has_contacts) shared.wakeTouched(world, detect);
   if (shared.has_contacts) {
     bool hit = false;
-    const double min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
+    const BounceThreshold min_bounce = minBounceSpeed(world, settings.contact, settings.dt);   // slower: inelastic
     ImpactLogger impacts;   // overlays only: reads the state around the impulses, writes none
     if (shared.impact_log) impacts.before(world, shared.contacts, settings.contact);
     shared.timed(Collide, [&] {

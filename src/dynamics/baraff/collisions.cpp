@@ -24,7 +24,7 @@ constexpr int kCollisionRounds = 4;
 }  // namespace
 
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts, const ContactSettings& s,
-                       double min_bounce_speed, double dt, ContactSolveStats& stats) {
+                       const BounceThreshold& min_bounce_speed, double dt, ContactSolveStats& stats) {
   // Every touching contact takes part, resting ones too: an impact is passed on through what it
   // presses against. Islands are independent; within one, impulse_propagation.h says how the
   // impact travels pair by pair while each pair's points are solved together.

@@ -19,10 +19,10 @@ ContactClass classify(const World& world, const Contact& c, const ContactSetting
 // Applies restitution impulses to every colliding contact and passes them on through the touching
 // contacts around them (a flat face landing on 4 corners is one impact, solved at once; a chain of
 // balls passes it on ball by ball). Returns true if any contact was colliding.
-// Impacts slower than `min_bounce_speed` (m/s) get no restitution, and lift-offs too short for a
+// Impacts slower than `min_bounce_speed` along their normal get no restitution, and lift-offs too short for a
 // step of `dt` to follow settle (contact_solve_common.h).
 bool resolveCollisions(World& world, const std::vector<Contact>& contacts,
-                       const ContactSettings& settings, double min_bounce_speed, double dt,
+                       const ContactSettings& settings, const BounceThreshold& min_bounce_speed, double dt,
                        ContactSolveStats& stats);
 
 }  // namespace tumble

@@ -37,9 +37,9 @@ void applyNewtonImpulses(World& world, const std::vector<const Contact*>& points
 // an inexact friction solve can miss that; without friction rows the inelastic impulse is a
 // projection (energy change -j^T A j / 2).
 void newtonImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
-                  double min_bounce_speed, double restitution_scale, ContactSolveStats& stats) {
+                  const BounceThreshold& min_bounce_speed, double restitution_scale, ContactSolveStats& stats) {
   std::vector<double> e;
-  for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed ? points[i]->restitution : 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed.along(points[i]->normal) ? points[i]->restitution : 0.0);
   applyAddingNoEnergy(
       world, points, restitution_scale,
       [&](double scale) { applyNewtonImpulses(world, points, vn, e, scale, true, stats); },
@@ -146,7 +146,7 @@ void inelasticIslandImpact(World& world, const std::vector<const Contact*>& isla
 
 }  // namespace
 
-void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
+void resolveImpact(World& world, const std::vector<const Contact*>& points, const BounceThreshold& min_bounce_speed,
                    double restitution_scale, RestitutionLaw law, ContactSolveStats& stats, const SettleRule* settle) {
   std::vector<double> vn;
   for (const Contact* c : points) vn.push_back(normalVelocity(world, *c));
@@ -198,28 +198,28 @@ bool sharesMovingBody(const World& world, const PairImpact& p, const PairImpact&
 }
 
 // Whether any point of the island approaches fast enough to bounce (restitution_laws.h's rule).
-bool anyBounces(const World& world, const std::vector<const Contact*>& island, double min_bounce_speed) {
+bool anyBounces(const World& world, const std::vector<const Contact*>& island, const BounceThreshold& min_bounce_speed) {
   for (const Contact* c : island)
-    if (c->restitution > 0 && normalVelocity(world, *c) < -min_bounce_speed) return true;
+    if (c->restitution > 0 && normalVelocity(world, *c) < -min_bounce_speed.along(c->normal)) return true;
   return false;
 }
 
 }  // namespace
 
 void plasticImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
-                   double min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats) {
+                   const BounceThreshold& min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats) {
   if (tooLargeToPivot(island.size(), s.max_direct_rows)) inelasticIslandImpact(world, island, stats);
   else resolveImpact(world, island, min_bounce_speed, 0.0, s.restitution_law, stats, &settle);
 }
 
 void plasticIslandImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
-                         double min_bounce_speed, double dt, ContactSolveStats& stats) {
+                         const BounceThreshold& min_bounce_speed, double dt, ContactSolveStats& stats) {
   plasticImpact(world, island, s, min_bounce_speed, settleRule(s, dt), stats);
 }
 
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
                        const std::vector<const Contact*>& outside, const ContactSettings& s,
-                       double min_bounce_speed, double dt, ContactSolveStats& stats) {
+                       const BounceThreshold& min_bounce_speed, double dt, ContactSolveStats& stats) {
   const SettleRule settle = settleRule(s, dt);
   // Pair by pair is how an elastic impact travels (a cradle's balls leave one after another). An
   // island where no point bounces is a plastic impact, whose answer is the simultaneous one: every

@@ -48,20 +48,20 @@ inline SettleRule settleRule(const ContactSettings& s, double dt) { return {4 * 
 
 // Resolves one island of touching contacts (bodies that touch, directly or through others) so that
 // afterwards no contact approaches faster than settings.resting_speed_m_s. Impacts slower than
-// `min_bounce_speed` (m/s) get no restitution (see Pipeline); lift-offs too short for a step of
+// `min_bounce_speed` (along each normal) get no restitution (see Pipeline); lift-offs too short for a step of
 // `dt` to follow settle (settleRule).
 // `outside`: the contacts not in any island (touching and separating, or within the margin), which
 // an elastic pair impact may have to take in (neighbour_turn_back.h).
 void propagateImpulses(World& world, const std::vector<const Contact*>& island,
-                       const std::vector<const Contact*>& outside, const ContactSettings& settings, double min_bounce_speed, double dt,
+                       const std::vector<const Contact*>& outside, const ContactSettings& settings, const BounceThreshold& min_bounce_speed, double dt,
                        ContactSolveStats& stats);
 
 // All the island's contacts at once, inelastic: nothing approaching after, no energy added.
 void plasticImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
-                   double min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats);
+                   const BounceThreshold& min_bounce_speed, const SettleRule& settle, ContactSolveStats& stats);
 // The same with the settle rule of a step of `dt`.
 void plasticIslandImpact(World& world, const std::vector<const Contact*>& island, const ContactSettings& s,
-                         double min_bounce_speed, double dt, ContactSolveStats& stats);
+                         const BounceThreshold& min_bounce_speed, double dt, ContactSolveStats& stats);
 
 // One simultaneous impact on `points`: Newton's law v+ >= -e v-, j >= 0, (v+ + e v-) j = 0 on every
 // normal, Coulomb on impulses (|j_t| <= mu j_n, aiming at zero tangential velocity), as one LCP in
@@ -70,7 +70,7 @@ void plasticIslandImpact(World& world, const std::vector<const Contact*>& island
 // friction can, Kane's paradox).
 // With a settle rule, an impact whose lift-offs gravity would end within the rule's time then
 // settles: no touching point leaves faster than it did before (see the .cpp).
-void resolveImpact(World& world, const std::vector<const Contact*>& points, double min_bounce_speed,
+void resolveImpact(World& world, const std::vector<const Contact*>& points, const BounceThreshold& min_bounce_speed,
                    double restitution_scale, RestitutionLaw law, ContactSolveStats& stats,
                    const SettleRule* settle = nullptr);
 

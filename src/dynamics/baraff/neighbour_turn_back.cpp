@@ -35,7 +35,7 @@ std::vector<const Contact*> closing(const World& world, const std::vector<const 
 // Whether stopping `close` plastically would bring back a point of `set` that the impact just
 // lifted (faster than max(v-, 0)). Leaves the world as it was.
 bool turnsBack(World& world, const std::vector<const Contact*>& set, const std::vector<double>& vn_before,
-               const std::vector<const Contact*>& close, double min_bounce_speed, RestitutionLaw law,
+               const std::vector<const Contact*>& close, const BounceThreshold& min_bounce_speed, RestitutionLaw law,
                double slack, ContactSolveStats& stats) {
   std::vector<std::size_t> lifted;
   for (std::size_t i = 0; i < set.size(); ++i)
@@ -76,7 +76,7 @@ std::vector<const Contact*> ContactNeighbours::around(const World& world,
 
 bool resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
                                  const std::vector<const Contact*>& neighbours, const ContactSettings& s,
-                                 double min_bounce_speed, double restitution_scale, const SettleRule& settle,
+                                 const BounceThreshold& min_bounce_speed, double restitution_scale, const SettleRule& settle,
                                  ContactSolveStats& stats) {
   if (neighbours.empty()) {
     resolveImpact(world, points, min_bounce_speed, restitution_scale, s.restitution_law, stats, &settle);

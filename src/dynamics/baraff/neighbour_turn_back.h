@@ -46,7 +46,7 @@ class ContactNeighbours {
 // to count (the settle rule's time). Returns whether it grew (bodies beyond the pair's moved).
 bool resolveImpactWithNeighbours(World& world, const std::vector<const Contact*>& points,
                                  const std::vector<const Contact*>& neighbours, const ContactSettings& s,
-                                 double min_bounce_speed, double restitution_scale, const SettleRule& settle,
+                                 const BounceThreshold& min_bounce_speed, double restitution_scale, const SettleRule& settle,
                                  ContactSolveStats& stats);
 
 }  // namespace tumble

@@ -48,10 +48,10 @@ bool pointImpact(World& world, const Contact& c, const std::vector<const Contact
 }  // namespace
 
 bool restitutionLawImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
-                          RestitutionLaw law, double min_bounce_speed, double restitution_scale,
+                          RestitutionLaw law, const BounceThreshold& min_bounce_speed, double restitution_scale,
                           ContactSolveStats& stats) {
   std::vector<double> e;
-  for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed ? points[i]->restitution : 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) e.push_back(vn[i] < -min_bounce_speed.along(points[i]->normal) ? points[i]->restitution : 0.0);
   if (points.size() == 1) return pointImpact(world, *points[0], points, e[0], law, restitution_scale);
   auto scaled = [&](double scale) {
     std::vector<double> out;

@@ -29,7 +29,7 @@ namespace tumble {
 // whose compression never ends (its normal velocity stops rising while it still approaches, as a
 // slender body sliding into a rough surface can); Newton's LCP then takes the impact.
 bool restitutionLawImpact(World& world, const std::vector<const Contact*>& points, const std::vector<double>& vn,
-                          RestitutionLaw law, double min_bounce_speed, double restitution_scale,
+                          RestitutionLaw law, const BounceThreshold& min_bounce_speed, double restitution_scale,
                           ContactSolveStats& stats);
 
 }  // namespace tumble

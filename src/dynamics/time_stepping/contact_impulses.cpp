@@ -52,7 +52,7 @@ double kineticEnergyOf(const World& world) {
 }  // namespace
 
 void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
-                            const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats) {
+                            const StepSettings& settings, const BounceThreshold& min_bounce_speed, ContactSolveStats& stats) {
   const double dt = settings.dt;
   const std::size_t m = contacts.size();
   std::vector<const ImpulseRecord*>& last = last_;
@@ -71,7 +71,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     const double gap = -c.depth;
     want[i] = -std::max(gap, 0.0) / dt;
     const double u = std::max(approach[i], owed[i]);
-    if (gap <= settings.contact.tolerance_m && u > min_bounce_speed) want[i] = std::max(want[i], c.restitution * u);
+    if (gap <= settings.contact.tolerance_m && u > min_bounce_speed.along(c.normal)) want[i] = std::max(want[i], c.restitution * u);
   });
   stats.resting += static_cast<long>(m);
 

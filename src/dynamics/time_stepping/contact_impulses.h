@@ -55,7 +55,7 @@ class ContactImpulses {
   // `min_bounce_speed` get no restitution (contact_solve_common.h).
   // The next step's warm start is not touched until remember().
   void apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
-             const StepSettings& settings, double min_bounce_speed, ContactSolveStats& stats);
+             const StepSettings& settings, const BounceThreshold& min_bounce_speed, ContactSolveStats& stats);
   // Keeps the impulses of the last apply() for the next step's warm start (a step solved again
   // from its start keeps only its last solve's).
   void remember() { memory_.replace(records_); }

@@ -30,7 +30,7 @@ void TimeSteppingModel::stepOnce(World& world, const StepSettings& settings, Sha
   if (shared.has_contacts && !(shared.contacts_fresh && end_state_.matches(world) && detected_dt_ == dt))
     detectAndCorrect(world, settings, shared);
   if (shared.has_contacts) step_start_.save(world);
-  const double min_bounce = shared.has_contacts ? minBounceSpeed(world, settings.contact, dt) : 0;
+  const BounceThreshold min_bounce = shared.has_contacts ? minBounceSpeed(world, settings.contact, dt) : BounceThreshold{};
   auto solve = [&](const std::vector<Contact>& contacts) {
     // Approach speeds before gravity's impulse: the speed an impact reverses.
     // The projection has turned bodies: their spins are read again.
