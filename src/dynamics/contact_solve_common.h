@@ -38,8 +38,9 @@ struct ContactSolveStats {
 // elastically it would come back every step (v -> e v - g.n dt has the fixed point g.n dt / (1 - e))
 // and never come to rest, so impacts slower than that are made inelastic. Gravity takes nothing
 // from a bounce off a wall: there only the resting speed bounds it. (One bound for every normal,
-// 2 |g| dt, stopped a ball rolling into a wall at 8 cm/s dead whatever its restitution at dt =
-// 1/240 s, and every impact of a bin of beads a few millimetres across.)
+// 2 |g| dt = 8.2 cm/s at dt = 1/240 s, stopped anything rolling or sliding into a wall slower than
+// that dead whatever its restitution, and so every impact in a bin of beads a few millimetres
+// across.)
 struct BounceThreshold {
   double resting_m_s = 0;                             // ContactSettings::resting_speed_m_s
   Eigen::Vector3d gravity_dt2 = Eigen::Vector3d::Zero();   // 2 g dt
