@@ -15,16 +15,6 @@ namespace tumble {
 
 namespace {
 
-// What one island's solve needs, kept between steps on each thread (islands may be solved on
-// several): grown to the largest island seen, then reused.
-struct IslandScratch {
-  ContactRows rows;
-  std::vector<const ImpulseRecord*> last;
-  ScratchVector b, p;
-  ContactLcp exact;          // a small island's pivoting problem
-  lcp::LcpResult pivoted;
-};
-
 // The share of the kinetic energy an answer with bounces may add before they are dropped
 // (rounding: a perfectly elastic bounce keeps it to about 1e-15).
 constexpr double kBounceEnergySlack = 1e-9;
@@ -51,34 +41,44 @@ double kineticEnergyOf(const World& world) {
 
 }  // namespace
 
-void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
-                            const StepSettings& settings, const BounceThreshold& min_bounce_speed, ContactSolveStats& stats) {
-  const double dt = settings.dt;
+// What one island's solve needs, kept between steps on each thread (islands may be solved on
+// several): grown to the largest island seen, then reused.
+struct ContactImpulses::IslandScratch {
+  ContactRows rows;
+  std::vector<const ImpulseRecord*> last;
+  ScratchVector b, p;
+  ContactLcp exact;          // a small island's pivoting problem
+  lcp::LcpResult pivoted;
+};
+
+void ContactImpulses::prepare(const World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
+                              const StepSettings& settings, const BounceThreshold& min_bounce_speed) {
   const std::size_t m = contacts.size();
-  std::vector<const ImpulseRecord*>& last = last_;
-  std::vector<double>&want = want_, &owed = owed_;   // normal velocity target; landing speed carried in
-  std::vector<const Contact*>& all = all_;
-  last.assign(m, nullptr);
-  want.assign(m, 0);
-  owed.assign(m, 0);
-  all.assign(m, nullptr);
-  // Per contact, on the threads: last step's impulse (a search of the memory) and the targets.
+  last_.assign(m, nullptr);
+  owed_.assign(m, 0);
+  bounce_.assign(m, -1);
+  all_.assign(m, nullptr);
+  // Per contact, on the threads: last step's impulse (a search of the memory) and the impacts.
   parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
-    all[i] = &c;
-    last[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
-    owed[i] = last[i] && last[i]->landing_carried <= kOwedBounceCarries ? last[i]->landing_speed : 0;
-    const double gap = -c.depth;
-    want[i] = -std::max(gap, 0.0) / dt;
-    const double u = std::max(approach[i], owed[i]);
-    if (gap <= settings.contact.tolerance_m && u > min_bounce_speed.along(c.normal)) want[i] = std::max(want[i], c.restitution * u);
+    all_[i] = &c;
+    last_[i] = memory_.find(world, c, ImpulseMemory::kMatchRadius);
+    owed_[i] = last_[i] && last_[i]->landing_carried <= kOwedBounceCarries ? last_[i]->landing_speed : 0;
+    const double u = std::max(approach[i], owed_[i]);
+    if (-c.depth <= settings.contact.tolerance_m && u > min_bounce_speed.along(c.normal)) bounce_[i] = c.restitution * u;
   });
-  stats.resting += static_cast<long>(m);
+  impacts_ = std::any_of(bounce_.begin(), bounce_.end(), [](double e) { return e >= 0; });
+}
 
-  std::vector<Eigen::Vector3d>& impulse = impulse_;   // on B, world axes
-  std::vector<double>& normal_impulse = normal_impulse_;
-  impulse.assign(m, Eigen::Vector3d::Zero());
-  normal_impulse.assign(m, 0);
+void ContactImpulses::targets(const std::vector<Contact>& contacts, double dt, bool bounces) {
+  want_.resize(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    want_[i] = -std::max(-contacts[i].depth, 0.0) / dt;
+    if (bounces && bounce_[i] >= 0) want_[i] = std::max(want_[i], bounce_[i]);
+  }
+}
+
+void ContactImpulses::cacheVelocities(const World& world) {
   // Each body's velocity once (the rows need it twice each; computing omega costs a rotation).
   velocity_.resize(world.bodies.size());
   spin_.resize(world.bodies.size());
@@ -87,9 +87,80 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     velocity_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.velocity();
     spin_[k] = body.is_static ? Eigen::Vector3d::Zero() : body.angularVelocity();
   }
-  auto rowVelocityNow = [&](const ContactRow& r) {
-    return r.dir.dot(velocity_[r.b] + spin_[r.b].cross(r.rb) - velocity_[r.a] - spin_[r.a].cross(r.ra));
-  };
+}
+
+void ContactImpulses::velocityTerms(std::span<const Contact* const> set, const ContactRows& rows, const Contact* first,
+                                    Eigen::Ref<Eigen::VectorXd> b) const {
+  for (int r = 0; r < rows.size(); ++r) {
+    const ContactRow& row = rows.rows[r];
+    b[r] = row.dir.dot(velocity_[row.b] + spin_[row.b].cross(row.rb) - velocity_[row.a] - spin_[row.a].cross(row.ra));
+  }
+  for (std::size_t k = 0; k < set.size(); ++k) b[rows.normal_row[k]] -= want_[static_cast<std::size_t>(set[k] - first)];
+}
+
+void ContactImpulses::solveIsland(const World& world, std::span<const Contact* const> island, IslandScratch& scratch,
+                                  const StepSettings& settings, double gravity_dt, ContactSolveStats& own) {
+  const ContactRows& rows = scratch.rows;
+  auto b = scratch.b.view(rows.size()), f = scratch.p.view(rows.size());
+  // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
+  const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
+  IslandImpulseSettings gs;
+  gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
+                        : settings.time_stepping_sweeps;
+  // A speed setting pivots only the small islands its sweeps leave unconverged at the usual
+  // tolerance (a mass ratio the sweeps cannot settle), not every flat landing.
+  gs.tolerance = small && !isSpeedSetting(settings) ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
+  gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
+  gs.gravity_dt = gravity_dt;
+  const bool converged = solveIslandImpulsesInPlace(world, rows, island, b, f, gs, own);
+  if (!converged && small && (!isSpeedSetting(settings) || massRatio(world, island) >= kSweepsMassRatio)) {
+    ContactLcp& exact = scratch.exact;
+    buildContactLcp(world, island, exact);   // the same rows
+    exact.problem.b = b;
+    solveContactLcp(exact.problem, own, scratch.pivoted);
+    if (usableLcpAnswer(scratch.pivoted, exact.problem)) f = scratch.pivoted.f;
+    else ++own.iterative_fallbacks;
+  }
+}
+
+bool ContactImpulses::applyImpacts(World& world, const std::vector<Contact>& contacts, const StepSettings& settings,
+                                   ContactSolveStats& stats) {
+  if (!impacts_ || !world.joints.empty() || isSpeedSetting(settings)) return false;
+  targets(contacts, settings.dt, true);
+  cacheVelocities(world);
+  islands_.split(world, all_);
+  island_stats_.assign(islands_.size(), ContactSolveStats{});
+  const Contact* const first = contacts.data();
+  parallelFor(settings.threads, islands_.size(), [&](std::size_t k) {
+    const std::span<const Contact* const> island = islands_[k];
+    if (std::none_of(island.begin(), island.end(), [&](const Contact* c) { return bounce_[c - first] >= 0; })) return;
+    thread_local IslandScratch scratch;
+    buildContactRows(world, island, scratch.rows);
+    velocityTerms(island, scratch.rows, first, scratch.b.view(scratch.rows.size()));
+    scratch.p.view(scratch.rows.size()).setZero();   // an impact owes nothing to the last step's load
+    solveIsland(world, island, scratch, settings, 0, island_stats_[k]);
+    applyAlongRows(world, scratch.rows.rows, scratch.p.view(scratch.rows.size()));
+  });
+  for (const ContactSolveStats& own : island_stats_) stats += own;
+  return true;
+}
+
+void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, const std::vector<double>& approach,
+                            const StepSettings& settings, bool bounces, ContactSolveStats& stats) {
+  const double dt = settings.dt;
+  const std::size_t m = contacts.size();
+  const std::vector<const ImpulseRecord*>& last = last_;
+  const std::vector<double>& want = want_;   // normal velocity target
+  const std::vector<double>& owed = owed_;   // landing speed carried in
+  const std::vector<const Contact*>& all = all_;
+  targets(contacts, dt, bounces);
+  stats.resting += static_cast<long>(m);
+
+  std::vector<Eigen::Vector3d>& impulse = impulse_;   // on B, world axes
+  std::vector<double>& normal_impulse = normal_impulse_;
+  impulse.assign(m, Eigen::Vector3d::Zero());
+  normal_impulse.assign(m, 0);
+  cacheVelocities(world);
   auto indexOf = [&](const Contact* c) { return static_cast<std::size_t>(c - contacts.data()); };
   // The impulses of one set of contacts (an island, or all of them) along their rows: applied, and
   // kept per contact for the records.
@@ -101,16 +172,11 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
       normal_impulse[i] = f[rows.normal_row[k]];
     }
   };
-  // The b of a set's rows: each row's velocity now, less its contact's normal target.
-  auto velocityTerms = [&](std::span<const Contact* const> set, const ContactRows& rows, Eigen::Ref<Eigen::VectorXd> b) {
-    for (int r = 0; r < rows.size(); ++r) b[r] = rowVelocityNow(rows.rows[r]);
-    for (std::size_t k = 0; k < set.size(); ++k) b[rows.normal_row[k]] -= want[indexOf(set[k])];
-  };
   if (!world.joints.empty()) {
     // Joints tie the islands together and push on the contacts: every contact and every joint row
     // in one problem (joints/contact_joint_lcp.h).
     ContactLcp exact = buildContactLcp(world, all, std::vector<char>(m, 1));
-    velocityTerms(all, exact, exact.problem.b);
+    velocityTerms(all, exact, contacts.data(), exact.problem.b);
     std::vector<JointRow> joint_rows;
     Eigen::VectorXd joint_b;
     jointStepRows(world, dt, joint_rows, joint_b);
@@ -157,33 +223,13 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
       // as it did last step) converge within a few sweeps. One that does not (a heavy box on a light
       // one: Gauss-Seidel converges at a rate set by the mass ratio; a tall stack) is solved exactly
       // by pivoting if it is small enough, and keeps the Gauss-Seidel answer otherwise (a pile).
-      const ContactRows& rows = scratch.rows;
       buildContactRows(world, island, scratch.rows);
-      auto b = scratch.b.view(rows.size()), f = scratch.p.view(rows.size());
-      velocityTerms(island, rows, b);
+      velocityTerms(island, scratch.rows, contacts.data(), scratch.b.view(scratch.rows.size()));
       scratch.last.resize(island.size());
       for (std::size_t c = 0; c < island.size(); ++c) scratch.last[c] = last[indexOf(island[c])];
-      warmStart(rows, scratch.last, f);
-      // An island that may be pivoted must converge to near rounding (tuning::kSmallIslandTolerance).
-      const bool small = !tooLargeToPivot(island.size(), settings.contact.max_direct_rows);
-      IslandImpulseSettings gs;
-      gs.max_sweeps = small ? std::min(settings.time_stepping_sweeps, tuning::kSmallIslandSweeps)
-                            : settings.time_stepping_sweeps;
-      // A speed setting pivots only the small islands its sweeps leave unconverged at the usual
-      // tolerance (a mass ratio the sweeps cannot settle), not every flat landing.
-      gs.tolerance = small && !isSpeedSetting(settings) ? tuning::kSmallIslandTolerance : tuning::kImpulseTolerance;
-      gs.subspace_rounds = settings.time_stepping_sweeps >= tuning::kActiveSetMinSweeps;
-      gs.gravity_dt = dt;
-      const bool converged = solveIslandImpulsesInPlace(world, rows, island, b, f, gs, own);
-      if (!converged && small && (!isSpeedSetting(settings) || massRatio(world, island) >= kSweepsMassRatio)) {
-        ContactLcp& exact = scratch.exact;
-        buildContactLcp(world, island, exact);   // the same rows
-        exact.problem.b = b;
-        solveContactLcp(exact.problem, own, scratch.pivoted);
-        if (usableLcpAnswer(scratch.pivoted, exact.problem)) f = scratch.pivoted.f;
-        else ++own.iterative_fallbacks;
-      }
-      store(island, rows, f);
+      warmStart(scratch.rows, scratch.last, scratch.p.view(scratch.rows.size()));
+      solveIsland(world, island, scratch, settings, dt, own);
+      store(island, scratch.rows, scratch.p.view(scratch.rows.size()));
     });
     for (const ContactSolveStats& own : island_stats_) stats += own;
   }

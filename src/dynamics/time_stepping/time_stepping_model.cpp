@@ -37,12 +37,20 @@ void TimeSteppingModel::stepOnce(World& world, const StepSettings& settings, Sha
     bodySpins(world, spin_);
     approach_.resize(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i) approach_[i] = -normalVelocity(world, contacts[i], spin_);
+    // Impacts first, then gravity's impulse and the load (contact_impulses.h).
+    bool impacts_solved = false;
+    if (shared.has_contacts)
+      shared.timed(Resting, [&] {
+        impulses_.prepare(world, contacts, approach_, settings, min_bounce);
+        impacts_solved = impulses_.applyImpacts(world, contacts, settings, shared.counters.contacts);
+      });
     shared.timed(Forces, [&] {
       if (shared.apply_gravity) applyGravityImpulse(world, dt);
     });
     if (shared.has_contacts)
-      shared.timed(Resting,
-                   [&] { impulses_.apply(world, contacts, approach_, settings, min_bounce, shared.counters.contacts); });
+      shared.timed(Resting, [&] {
+        impulses_.apply(world, contacts, approach_, settings, !impacts_solved, shared.counters.contacts);
+      });
   };
   solve(shared.contacts);
   // A body the solve sent farther than the contacts were found for (an impact spinning up a light
