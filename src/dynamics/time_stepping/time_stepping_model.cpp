@@ -121,7 +121,10 @@ std::vector<std::string> TimeSteppingModel::describe(const StepSettings& setting
   std::vector<std::string> lines;
   if (shared.apply_gravity) lines.push_back("forces      gravity impulse on " + shared.movingBodies());
   if (shared.has_contacts)
-    lines.push_back("resting     time stepping: velocity-level impulses (restitution, friction pyramid), "
+    lines.push_back(std::string("resting     time stepping: velocity-level impulses (restitution, friction pyramid), ") +
+                    (isSpeedSetting(settings) || !joints_line_.empty()
+                         ? ""
+                         : "a step's impacts solved first, before gravity's impulse and the load; ") +
                     "warm-started Gauss-Seidel, at most " + std::to_string(settings.time_stepping_sweeps) +
                     " sweeps; " + (settings.contact.max_direct_rows == 0 ? "every island by Gauss-Seidel alone"
                                    : isSpeedSetting(settings)
