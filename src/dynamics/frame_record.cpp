@@ -66,8 +66,9 @@ FrameRecord FrameRecorder::record(const World& world, const Pipeline& pipeline, 
     r.depth = c.depth;
     if (impulses.memory && impulses.span_s > 0)
       if (const ImpulseRecord* rec = impulses.memory->find(world, c, ImpulseMemory::kMatchRadius)) {
-        r.has_force = rec->impulse.squaredNorm() > 0;
-        r.force = rec->impulse / impulses.span_s;
+        const Eigen::Vector3d impulse = rec->impulse + rec->impact;
+        r.has_force = impulse.squaredNorm() > 0;
+        r.force = impulse / impulses.span_s;
       }
     // In force: touching within the tolerance, or pushing (a time-stepping contact at a gap).
     if (c.depth < -contact_.tolerance_m && !r.has_force) continue;

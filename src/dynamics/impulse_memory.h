@@ -20,6 +20,9 @@ struct ImpulseRecord {
   int a = -1, b = -1;
   Eigen::Vector3d local = Eigen::Vector3d::Zero();     // the contact point in body A's frame
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();   // N s on B, world axes (normal + friction)
+  // The time-stepping model's impact phase, solved before the step's load (N s on B, world): drawn
+  // with the contact's force, never a warm start.
+  Eigen::Vector3d impact = Eigen::Vector3d::Zero();
   double landing_speed = 0;   // m/s: approach speed of a landing closed speculatively, owed a bounce
   int landing_carried = 0;    // steps that bounce has been carried past a step that did not touch
 };

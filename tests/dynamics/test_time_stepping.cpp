@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "contact_scene_runner.h"
+#include "dynamics/gravity.h"
 #include "dynamics/impulse_memory.h"
 #include "dynamics/time_stepping/contact_impulses.h"
 #include "scene/world_builder.h"
@@ -240,6 +241,40 @@ TEST_CASE("impulse memory: each contact finds its own pair's record among many p
   CHECK(memory.find(world, c, 1e-3) == nullptr);
 }
 
+
+TEST_CASE("time stepping: an impact is solved before the step's load, and recorded beside it, no warm start",
+          "[contact][time_stepping]") {
+  // A cube touching the ground at one point, falling at 2 m/s, e = 0.5, no friction. The impact
+  // phase reverses it to 1 m/s before gravity's impulse (N s = m (1 + e) u = 3 on a 1 kg cube);
+  // gravity's impulse then leaves it rising at 1 - g dt, so the load's solve has nothing to do.
+  BuiltWorld built = buildWorld(loadScene(std::string(TUMBLE_SOURCE_DIR) + "/scenes/rest.json"));
+  World& world = built.world;
+  StepSettings settings = built.step;
+  RigidBody& cube = world.bodies[1];
+  Contact c;
+  c.a = 0;   // the ground
+  c.b = 1;
+  c.normal = Eigen::Vector3d::UnitZ();
+  c.point = cube.x - Eigen::Vector3d(0, 0, 0.5);   // under the centre: no turning
+  c.restitution = 0.5;
+  c.depth = 0;
+  cube.P = cube.mass * Eigen::Vector3d(0, 0, -2);
+  const std::vector<Contact> contacts{c};
+  const std::vector<double> approach{2};
+  ContactImpulses impulses;
+  ContactSolveStats stats;
+  impulses.prepare(world, contacts, approach, settings, minBounceSpeed(world, settings.contact, settings.dt));
+  REQUIRE(impulses.applyImpacts(world, contacts, settings, stats));
+  CHECK(cube.velocity().z() == Approx(1).epsilon(1e-12));
+  applyGravityImpulse(world, settings.dt);
+  impulses.apply(world, contacts, approach, settings, false, stats);
+  impulses.remember();
+  CHECK(cube.velocity().z() == Approx(1 - 9.81 * settings.dt).epsilon(1e-12));
+  const ImpulseRecord* record = impulses.memory().find(world, c, ImpulseMemory::kMatchRadius);
+  REQUIRE(record);
+  CHECK(record->impact.z() == Approx(3 * cube.mass).epsilon(1e-12));   // drawn with the contact's force
+  CHECK(record->impulse.norm() < 1e-12);                               // the next step's warm start: none
+}
 
 TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short of touching past one step",
           "[contact][time_stepping]") {

@@ -57,6 +57,7 @@ void ContactImpulses::prepare(const World& world, const std::vector<Contact>& co
   last_.assign(m, nullptr);
   owed_.assign(m, 0);
   bounce_.assign(m, -1);
+  impact_impulse_.assign(m, Eigen::Vector3d::Zero());
   all_.assign(m, nullptr);
   // Per contact, on the threads: last step's impulse (a search of the memory) and the impacts.
   parallelFor(settings.threads, m, [&](std::size_t i) {
@@ -150,6 +151,8 @@ bool ContactImpulses::applyImpacts(World& world, const std::vector<Contact>& con
     scratch.p.view(scratch.rows.size()).setZero();   // an impact owes nothing to the last step's load
     solveIsland(world, island, scratch, settings, 0, island_stats_[k]);
     applyAlongRows(world, scratch.rows.rows, scratch.p.view(scratch.rows.size()));
+    for (std::size_t c = 0; c < island.size(); ++c)
+      impact_impulse_[static_cast<std::size_t>(island[c] - first)] = impulseOfContact(scratch.rows, scratch.p.view(scratch.rows.size()), c, 1.0);
   });
   for (const ContactSolveStats& own : island_stats_) stats += own;
   return true;
@@ -249,6 +252,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
   parallelFor(settings.threads, m, [&](std::size_t i) {
     const Contact& c = contacts[i];
     records[i] = impulseRecord(world, c, impulse[i]);
+    records[i].impact = impact_impulse_[i];
     // A landing the margin closed this step (pushed, not yet touching) is owed its bounce; one
     // still short of touching a step later carries what it was owed, once.
     const bool landing = -c.depth > settings.contact.tolerance_m && normal_impulse[i] > 0;

@@ -69,8 +69,8 @@ class ContactImpulses {
   // 30 % at 5 cm/s, and a rocking block's landing corner shared its impact with the lifting one's
   // load. Impacts first and the load after is the order of E. Guendelman, R. Bridson and R.
   // Fedkiw, "Nonconvex rigid bodies with stacking" (2003): collision, then the velocity update, then
-  // the contact (e = 0) solve. The impact's impulses are neither kept for the next step's warm start
-  // nor recorded as the contact's force (frame_record.h): an impact owes the next step nothing.
+  // the contact (e = 0) solve. The impact's impulses are no warm start for the next step (an impact
+  // owes it nothing); they are recorded beside the load's, drawn with the contact's force.
   bool applyImpacts(World& world, const std::vector<Contact>& contacts, const StepSettings& settings,
                     ContactSolveStats& stats);
   // Applies this step's contact impulses to the momenta of `world`, whose velocities already hold
@@ -104,6 +104,7 @@ class ContactImpulses {
   std::vector<const ImpulseRecord*> last_;         // per contact: last step's record, or null
   std::vector<double> want_, owed_;                // per contact: normal velocity target, bounce owed
   std::vector<double> bounce_;                     // per contact: an impact's bounce e u, else -1
+  std::vector<Eigen::Vector3d> impact_impulse_;    // per contact: the impact phase's (on B, world)
   bool impacts_ = false;
   std::vector<const Contact*> all_;
   std::vector<Eigen::Vector3d> impulse_;           // per contact: on B, world axes
