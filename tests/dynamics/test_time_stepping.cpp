@@ -20,6 +20,18 @@ namespace {
 
 void timeStepping(Scene& scene) { scene.simulation.step.model = ContactModel::TimeStepping; }
 
+// A contact of scenes/rest.json's cube (body 1) with the ground (body 0), `below` m under its
+// centre, e = 0.5.
+Contact groundContactUnder(const RigidBody& cube, double below) {
+  Contact c;
+  c.a = 0;
+  c.b = 1;
+  c.normal = Eigen::Vector3d::UnitZ();
+  c.point = cube.x - Eigen::Vector3d(0, 0, below);
+  c.restitution = 0.5;
+  return c;
+}
+
 const BodySample& last(const test::SceneRun& run, int body) { return run.trajectory.frames.back()[body]; }
 const BodySample& first(const test::SceneRun& run, int body) { return run.trajectory.frames.front()[body]; }
 
@@ -251,12 +263,7 @@ TEST_CASE("time stepping: an impact is solved before the step's load, and record
   World& world = built.world;
   StepSettings settings = built.step;
   RigidBody& cube = world.bodies[1];
-  Contact c;
-  c.a = 0;   // the ground
-  c.b = 1;
-  c.normal = Eigen::Vector3d::UnitZ();
-  c.point = cube.x - Eigen::Vector3d(0, 0, 0.5);   // under the centre: no turning
-  c.restitution = 0.5;
+  Contact c = groundContactUnder(cube, 0.5);   // under the centre: no turning
   c.depth = 0;
   cube.P = cube.mass * Eigen::Vector3d(0, 0, -2);
   const std::vector<Contact> contacts{c};
@@ -286,12 +293,7 @@ TEST_CASE("time stepping: a landing's bounce lapses when the contact stays short
   World& world = built.world;
   StepSettings settings = built.step;
   RigidBody& cube = world.bodies[1];
-  Contact c;
-  c.a = 0;   // the ground
-  c.b = 1;
-  c.normal = Eigen::Vector3d::UnitZ();
-  c.point = cube.x - Eigen::Vector3d(0, 0, 0.25);
-  c.restitution = 0.5;
+  Contact c = groundContactUnder(cube, 0.25);
   ContactImpulses impulses;
   ContactSolveStats stats;
   const double g_dt = 9.81 * settings.dt;
