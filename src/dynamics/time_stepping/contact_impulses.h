@@ -66,11 +66,12 @@ class ContactImpulses {
   // Solved in one problem with the step's load, an impact shares the solve with the friction the
   // resting contacts carry under gravity's impulse (mu m g dt): a ball rolling into a wall had its
   // spin braked by the ground in the impact's own solve and rolled away 3.1 % too fast at 1 m/s and
-  // 30 % at 5 cm/s, and a rocking block's landing corner shared its impact with the lifting one's
-  // load. Impacts first and the load after is the order of E. Guendelman, R. Bridson and R.
-  // Fedkiw, "Nonconvex rigid bodies with stacking" (2003): collision, then the velocity update, then
-  // the contact (e = 0) solve. The impact's impulses are no warm start for the next step (an impact
-  // owes it nothing); they are recorded beside the load's, drawn with the contact's force.
+  // 30 % at 5 cm/s. (A rocking block's landing closes within its step through the speculative margin,
+  // so this does not reach it: docs/known-limits.md.) Impacts first and the load after is the order
+  // of E. Guendelman, R. Bridson and R. Fedkiw, "Nonconvex rigid bodies with stacking" (2003):
+  // collision, then the velocity update, then the contact (e = 0) solve. The impact's impulses are
+  // no warm start for the next step (an impact owes it nothing); they are recorded beside the
+  // load's, drawn with the contact's force.
   bool applyImpacts(World& world, const std::vector<Contact>& contacts, const StepSettings& settings,
                     ContactSolveStats& stats);
   // Applies this step's contact impulses to the momenta of `world`, whose velocities already hold
