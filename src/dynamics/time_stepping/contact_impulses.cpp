@@ -69,6 +69,7 @@ void ContactImpulses::prepare(const World& world, const std::vector<Contact>& co
     if (-c.depth <= settings.contact.tolerance_m && u > min_bounce_speed.along(c.normal)) bounce_[i] = c.restitution * u;
   });
   impacts_ = std::any_of(bounce_.begin(), bounce_.end(), [](double e) { return e >= 0; });
+  islands_split_ = false;
 }
 
 void ContactImpulses::targets(const std::vector<Contact>& contacts, double dt, bool bounces) {
@@ -140,6 +141,7 @@ bool ContactImpulses::applyImpacts(World& world, const std::vector<Contact>& con
   targets(contacts, settings.dt, true);
   cacheVelocities(world);
   islands_.split(world, all_);
+  islands_split_ = true;
   island_stats_.assign(islands_.size(), ContactSolveStats{});
   const Contact* const first = contacts.data();
   parallelFor(settings.threads, islands_.size(), [&](std::size_t k) {
@@ -226,7 +228,7 @@ void ContactImpulses::apply(World& world, const std::vector<Contact>& contacts, 
     // converged (one solve over all of them would stop quiet islands at the busiest one's tolerance).
     // They share no moving body, so they may be solved on several threads: each reads the velocities
     // of before the solve and writes its own bodies' momenta and its own contacts' impulses.
-    islands_.split(world, all);
+    if (!islands_split_) islands_.split(world, all);   // the impact phase's split holds: the same contacts
     island_stats_.assign(islands_.size(), ContactSolveStats{});
     parallelFor(settings.threads, islands_.size(), [&](std::size_t k) {
       const std::span<const Contact* const> island = islands_[k];

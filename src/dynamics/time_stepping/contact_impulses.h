@@ -107,6 +107,7 @@ class ContactImpulses {
   std::vector<double> bounce_;                     // per contact: an impact's bounce e u, else -1
   std::vector<Eigen::Vector3d> impact_impulse_;    // per contact: the impact phase's (on B, world)
   bool impacts_ = false;
+  bool islands_split_ = false;                     // islands_ already split for prepare()'s contacts
   std::vector<const Contact*> all_;
   std::vector<Eigen::Vector3d> impulse_;           // per contact: on B, world axes
   std::vector<double> normal_impulse_;
